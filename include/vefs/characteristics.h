@@ -1,0 +1,25 @@
+#ifndef vefs_characteristics_h
+#define vefs_characteristics_h
+
+#include <deal.II/base/bounding_box.h>
+
+#include <vefs/transported_fields.h>
+
+namespace vefs
+{
+  /**
+   * Advection step of the splitting (design section 2, step 1): every field
+   * takes at a node x its old value at the foot of the characteristic,
+   *   X(x) = x - tau u(x - tau/2 u(x)),
+   * a two-stage trace, second order in the foot position. Feet may lie many
+   * cells away and on other MPI ranks (RemotePointEvaluation finds them);
+   * feet outside the cavity are moved back onto its boundary.
+   */
+  template <int dim>
+  void
+  advect_along_characteristics(TransportedFields<dim> &fields,
+                               const double            tau,
+                               const BoundingBox<dim> &cavity);
+} // namespace vefs
+
+#endif

@@ -1,0 +1,61 @@
+#ifndef vefs_free_surface_h
+#define vefs_free_surface_h
+
+#include <deal.II/lac/vector.h>
+
+#include <vefs/transported_fields.h>
+
+namespace vefs
+{
+  /**
+   * The liquid indicator phi = H(-psi), integrated per cell with a
+   * sub-cell rule and a Heaviside smoothed over one sub-cell, so that the
+   * volume depends smoothly on the level set.
+   */
+  template <int dim>
+  struct LiquidMeasure
+  {
+    double         volume = 0;
+    Tensor<1, dim> first_moment;
+    /** d volume / d shift, for psi -> psi + shift (minus the surface area). */
+    double volume_derivative = 0;
+  };
+
+  /** Liquid volume and its first moment, for the level set psi + shift. */
+  template <int dim>
+  LiquidMeasure<dim>
+  measure_liquid(const TransportedFields<dim> &fields, const double shift = 0);
+
+  /**
+   * Restore the liquid volume @p target by adding one constant to psi,
+   * i.e. by moving the whole free surface along its normal by the same
+   * small distance. Returns that distance.
+   */
+  template <int dim>
+  double
+  correct_volume(TransportedFields<dim> &fields, const double target);
+
+  /**
+   * Liquid volume fraction of every locally owned and ghost cell, indexed by
+   * active_cell_index(). A cell with fraction >= 1/2 is a liquid cell.
+   */
+  template <int dim>
+  Vector<float>
+  liquid_fractions(const TransportedFields<dim> &fields);
+
+  inline bool
+  is_liquid(const float fraction)
+  {
+    return fraction >= 0.5f;
+  }
+
+  /** Largest coordinate @p coordinate of the liquid on wall @p boundary_id. */
+  template <int dim>
+  double
+  liquid_extent_on_wall(const TransportedFields<dim> &fields,
+                        const types::boundary_id      boundary_id,
+                        const unsigned int            coordinate,
+                        const double                  value_if_dry);
+} // namespace vefs
+
+#endif

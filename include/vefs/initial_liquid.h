@@ -1,0 +1,33 @@
+#ifndef vefs_initial_liquid_h
+#define vefs_initial_liquid_h
+
+#include <deal.II/base/function.h>
+
+#include <vefs/parameters.h>
+
+#include <memory>
+
+namespace vefs
+{
+  using namespace dealii;
+
+  /**
+   * Signed distance (m) to the initial free surface, negative in the liquid:
+   * exact for the box and the ball, the user's expression otherwise.
+   */
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  make_initial_level_set(const Parameters &parameters);
+
+  /** Initial velocity field, dim components. */
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  make_initial_velocity(const Parameters &parameters);
+
+  /** Velocity imposed on a 'velocity' wall, dim components, time dependent. */
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  make_wall_velocity(const Parameters &parameters, const unsigned int wall);
+} // namespace vefs
+
+#endif

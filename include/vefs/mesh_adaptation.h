@@ -1,0 +1,41 @@
+#ifndef vefs_mesh_adaptation_h
+#define vefs_mesh_adaptation_h
+
+#include <vefs/parameters.h>
+#include <vefs/transported_fields.h>
+
+namespace vefs
+{
+  /**
+   * Refinement levels tied to the free surface (design section 2, step 2):
+   * the finest level in a band around psi = 0, the bulk level inside the
+   * liquid, the minimum level in the empty cavity.
+   */
+  class MeshLevels
+  {
+  public:
+    MeshLevels(const Parameters &parameters);
+
+    unsigned int
+    target_level(const double psi_lowest, const double psi_highest) const;
+
+    /** Size of the finest cells (their shortest edge). */
+    double finest_cell_size;
+
+  private:
+    unsigned int min_level, bulk_level, max_level;
+    double       band_half_width;
+  };
+
+  /**
+   * Refine and coarsen toward the target levels, transferring the fields,
+   * until the mesh stops changing. Returns true if it changed.
+   */
+  template <int dim>
+  bool
+  adapt_mesh(parallel::distributed::Triangulation<dim> &triangulation,
+             TransportedFields<dim> &                   fields,
+             const MeshLevels &                         levels);
+} // namespace vefs
+
+#endif

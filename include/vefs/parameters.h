@@ -1,0 +1,116 @@
+#ifndef vefs_parameters_h
+#define vefs_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace vefs
+{
+  /**
+   * A problem with the user's input: reported as one message naming the
+   * entry and what is allowed, then the run stops with a non-zero status.
+   */
+  class InputError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /** What a cavity wall does to the liquid that touches it. */
+  enum class WallType
+  {
+    no_slip,
+    slip,
+    open,
+    velocity
+  };
+
+  /** The regime selected by the material parameters (design section 1). */
+  enum class Regime
+  {
+    newtonian,
+    oldroyd_b,
+    elastic_solid
+  };
+
+  /** Names of the cavity walls, in boundary-id order. */
+  const std::array<std::string, 6> wall_names = {
+    {"x-", "x+", "y-", "y+", "z-", "z+"}};
+
+  /**
+   * Every input of a scene. The defaults describe the default scene, the 2D
+   * broken dam of Martin & Moyce (1952) with n^2 = 2.
+   */
+  struct Parameters
+  {
+    static void
+    declare(dealii::ParameterHandler &prm);
+
+    /** Read the values from @p prm and check them for consistency. */
+    void
+    parse(dealii::ParameterHandler &prm);
+
+    Regime
+    regime() const;
+
+    /** Effective viscosity of the Newtonian regime. */
+    double
+    newtonian_viscosity() const
+    {
+      return solvent_viscosity + polymer_viscosity;
+    }
+
+    unsigned int dimension;
+    std::string  output_directory;
+
+    double end_time;
+    double time_step;
+    double target_cfl;
+
+    std::vector<double>       cavity_lower;
+    std::vector<double>       cavity_upper;
+    std::vector<unsigned int> coarse_subdivisions;
+
+    std::array<WallType, 6>    wall_type;
+    std::array<std::string, 6> wall_velocity;
+
+    double              density;
+    double              solvent_viscosity;
+    double              polymer_viscosity;
+    double              relaxation_time;
+    double              alpha;
+    std::vector<double> gravity;
+
+    std::string         initial_shape;
+    std::vector<double> box_lower;
+    std::vector<double> box_upper;
+    std::vector<double> ball_center;
+    double              ball_radius;
+    std::string         level_set_expression;
+    std::string         initial_velocity;
+
+    unsigned int min_level;
+    unsigned int bulk_level;
+    unsigned int max_level;
+    double       band_width;
+    unsigned int extension_layers;
+    bool         volume_correction;
+
+    double       solver_tolerance;
+    unsigned int solver_max_iterations;
+    double       pressure_stabilization;
+
+    unsigned int output_interval;
+    bool         verbose;
+
+  private:
+    void
+    check() const;
+  };
+} // namespace vefs
+
+#endif

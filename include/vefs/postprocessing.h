@@ -1,0 +1,67 @@
+#ifndef vefs_postprocessing_h
+#define vefs_postprocessing_h
+
+#include <vefs/parameters.h>
+#include <vefs/stokes_step.h>
+#include <vefs/transported_fields.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace vefs
+{
+  /** Functionals of the liquid after one time step (design section 7). */
+  template <int dim>
+  struct StepStatistics
+  {
+    unsigned int   step       = 0;
+    double         time       = 0;
+    double         tau        = 0;
+    double         cfl        = 0;
+    double         volume     = 0;
+    double         volume_change = 0;
+    double         liquid_cell_volume = 0;
+    Tensor<1, dim> centroid;
+    double         kinetic_energy   = 0;
+    double         potential_energy = 0;
+    double         elastic_energy   = 0;
+    double         max_velocity     = 0;
+    double         floor_extent     = 0;
+    double         wall_height      = 0;
+    unsigned int   cells            = 0;
+    unsigned int   liquid_cells     = 0;
+    unsigned int   dofs             = 0;
+    unsigned int   linear_iterations = 0;
+    double         wall_time        = 0;
+  };
+
+  /**
+   * Measure the liquid: volume and centroid from phi, energies and the
+   * largest speed on the liquid cells, and the extents of the liquid along
+   * the floor and up the x- wall (the broken-dam front and residual height).
+   */
+  template <int dim>
+  void
+  measure_step(const Parameters &            parameters,
+               const TransportedFields<dim> &fields,
+               const StokesStep<dim> &       flow,
+               const double                  initial_volume,
+               StepStatistics<dim> &         statistics);
+
+  /** The `statistics` table, one row a step, written by rank 0. */
+  template <int dim>
+  class StatisticsFile
+  {
+  public:
+    StatisticsFile(const std::string &directory, const MPI_Comm comm);
+
+    void
+    write(const StepStatistics<dim> &row);
+
+  private:
+    std::ofstream file;
+  };
+} // namespace vefs
+
+#endif

@@ -1,0 +1,63 @@
+#ifndef vefs_simulator_h
+#define vefs_simulator_h
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <vefs/mesh_adaptation.h>
+#include <vefs/parameters.h>
+#include <vefs/postprocessing.h>
+#include <vefs/stokes_step.h>
+#include <vefs/transported_fields.h>
+#include <vefs/visualization.h>
+
+namespace vefs
+{
+  /**
+   * A free-surface flow in a box-shaped cavity, advanced by the order-one
+   * splitting of the design notes (section 2): advection along
+   * characteristics, mesh adaptation to the new surface, diffusion on the
+   * liquid cells.
+   */
+  template <int dim>
+  class Simulator
+  {
+  public:
+    Simulator(const Parameters &parameters, const ParameterHandler &prm);
+
+    void
+    run();
+
+  private:
+    void
+    make_cavity();
+
+    void
+    set_initial_state();
+
+    double
+    choose_time_step(const double max_velocity) const;
+
+    void
+    report(StepStatistics<dim> &statistics, const Vector<float> &liquid_fraction);
+
+    const Parameters &                        parameters;
+    const MPI_Comm                            comm;
+    ConditionalOStream                        pcout;
+    mutable TimerOutput                       timer;
+    parallel::distributed::Triangulation<dim> triangulation;
+    BoundingBox<dim>                          cavity;
+    const MeshLevels                          levels;
+    TransportedFields<dim>                    fields;
+    StokesStep<dim>                           flow;
+    StatisticsFile<dim>                       statistics_file;
+    Visualization<dim>                        visualization;
+    double                                    initial_volume = 0;
+    Timer                                     wall_clock;
+  };
+} // namespace vefs
+
+#endif

@@ -1,0 +1,118 @@
+#ifndef vefs_stokes_step_h
+#define vefs_stokes_step_h
+
+#include <deal.II/base/function.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/hp/fe_collection.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <vefs/parameters.h>
+#include <vefs/transported_fields.h>
+
+#include <memory>
+
+namespace vefs
+{
+  /** The diffusion step failed: the run stops with this message. */
+  class SolverError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /**
+   * The diffusion (correction) step of the splitting, design section 2,
+   * step 3, for a Newtonian liquid: the Stokes-like problem
+   *   rho (u - u*)/tau - div(2 mu eps(u)) + grad p = rho g,  div u = 0
+   * on the liquid cells only. Elements: Q1-Q1 with consistent pressure
+   * stabilisation (PSPG) on liquid cells, FE_Nothing elsewhere, so that the
+   * free surface carries the natural zero-traction condition.
+   */
+  template <int dim>
+  class StokesStep
+  {
+  public:
+    using BlockVector = TrilinosWrappers::MPI::BlockVector;
+
+    StokesStep(const Parameters &                               parameters,
+               const parallel::distributed::Triangulation<dim> &triangulation);
+
+    /** Flow unknowns on the cells whose liquid fraction is >= 1/2. */
+    void
+    setup(const Vector<float> &liquid_fraction, const double time);
+
+    /** Assemble with u* = the advected velocity of @p fields. */
+    void
+    assemble(const TransportedFields<dim> &fields, const double tau);
+
+    /** Returns the number of Krylov iterations; throws SolverError. */
+    unsigned int
+    solve();
+
+    /**
+     * Write the new velocity into the nodes of liquid cells of @p fields and
+     * flag them in @p known.
+     */
+    void
+    copy_velocity_to(TransportedFields<dim> &                    fields,
+                     typename TransportedFields<dim>::VectorType &known) const;
+
+    bool
+    is_liquid(const typename Triangulation<dim>::active_cell_iterator &cell) const;
+
+    types::global_dof_index
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    const BlockVector &
+    get_solution() const
+    {
+      return solution;
+    }
+
+  private:
+    static constexpr unsigned int liquid_index = 0;
+    static constexpr unsigned int empty_index  = 1;
+
+    void
+    make_wall_constraints(const double time);
+
+    /** A liquid cell's face on the free surface or on an open wall. */
+    bool
+    is_free_surface(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                    const unsigned int face) const;
+
+    const Parameters &     parameters;
+    const MPI_Comm         comm;
+    hp::FECollection<dim>  fe_collection;
+    DoFHandler<dim>        dof_handler;
+    std::vector<IndexSet>  owned_partitioning;
+    std::vector<IndexSet>  relevant_partitioning;
+    AffineConstraints<double> constraints;
+    std::array<std::unique_ptr<Function<dim>>, 6> wall_velocity;
+
+    TrilinosWrappers::BlockSparseMatrix system_matrix;
+    TrilinosWrappers::BlockSparseMatrix schur_matrix;
+    BlockVector                         system_rhs;
+    BlockVector                         lumped_pressure_mass;
+    BlockVector                         solution;
+    double                              viscosity;
+  };
+} // namespace vefs
+
+#endif

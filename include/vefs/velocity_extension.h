@@ -1,0 +1,23 @@
+#ifndef vefs_velocity_extension_h
+#define vefs_velocity_extension_h
+
+#include <vefs/transported_fields.h>
+
+namespace vefs
+{
+  /**
+   * Extend the velocity from the nodes flagged in @p known (the nodes of
+   * liquid cells, flag = 1 in the first component of the node) into
+   * @p n_layers layers of cells around the liquid: each layer gives an
+   * unknown node the average of the known nodes of the cells it shares with
+   * them. The characteristics of the next step trace back through this band;
+   * farther nodes get zero velocity.
+   */
+  template <int dim>
+  void
+  extend_velocity(TransportedFields<dim> &                    fields,
+                  typename TransportedFields<dim>::VectorType &known,
+                  const unsigned int                          n_layers);
+} // namespace vefs
+
+#endif

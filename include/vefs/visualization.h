@@ -1,0 +1,35 @@
+#ifndef vefs_visualization_h
+#define vefs_visualization_h
+
+#include <vefs/stokes_step.h>
+#include <vefs/transported_fields.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vefs
+{
+  /**
+   * Writes the `.pvtu` files of a run and keeps its `.pvd` time series up to
+   * date, so that ParaView can open the series while the run goes on.
+   */
+  template <int dim>
+  class Visualization
+  {
+  public:
+    explicit Visualization(const std::string &directory);
+
+    void
+    write(const TransportedFields<dim> &fields,
+          const StokesStep<dim> &       flow,
+          const Vector<float> &         liquid_fraction,
+          const double                  time);
+
+  private:
+    const std::string                          directory;
+    std::vector<std::pair<double, std::string>> series;
+  };
+} // namespace vefs
+
+#endif

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Usage: scripts/run.sh [file.prm] [extra args]
+# Builds (via setup.sh) and runs build/vefs in the CURRENT working directory.
+# Without a prm file vefs runs its built-in default scene (writes ./output/).
+# NP=<n> (n>1) runs under mpirun with n ranks.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+
+# Build first; keep the caller's cwd for the run itself.
+bash "$ROOT/scripts/setup.sh" >&2
+
+export OMPI_ALLOW_RUN_AS_ROOT=1
+export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_btl_vader_single_copy_mechanism="${OMPI_MCA_btl_vader_single_copy_mechanism:-none}"
+
+NP="${NP:-1}"
+if [[ "$NP" -gt 1 ]]; then
+  exec mpirun -np "$NP" --oversubscribe "$ROOT/build/vefs" "$@"
+else
+  exec "$ROOT/build/vefs" "$@"
+fi

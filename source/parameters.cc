@@ -1,0 +1,476 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <vefs/parameters.h>
+
+#include <map>
+#include <sstream>
+
+namespace vefs
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::vector<double>
+    to_doubles(const std::string &text)
+    {
+      return Utilities::string_to_double(
+        Utilities::split_string_list(text, ','));
+    }
+
+    std::string
+    entry_error(const std::string &entry, const std::string &what)
+    {
+      return "entry '" + entry + "': " + what;
+    }
+
+    void
+    require(const bool condition, const std::string &entry, const std::string &what)
+    {
+      if (!condition)
+        throw InputError(entry_error(entry, what));
+    }
+
+    const std::map<std::string, WallType> wall_type_names = {
+      {"no-slip", WallType::no_slip},
+      {"slip", WallType::slip},
+      {"open", WallType::open},
+      {"velocity", WallType::velocity}};
+
+    std::string
+    variable_names(const unsigned int dim)
+    {
+      return dim == 2 ? "x,y,t" : "x,y,z,t";
+    }
+
+    /** Parse a muParser expression once so that a typo stops the run early. */
+    template <int dim>
+    void
+    check_expression(const std::string &expression,
+                     const unsigned int n_components,
+                     const std::string &entry)
+    {
+      const auto parts = Utilities::split_string_list(expression, ';');
+      require(parts.size() == n_components,
+              entry,
+              "needs " + std::to_string(n_components) +
+                " expression(s) separated by ';', got '" + expression + "'");
+      try
+        {
+          FunctionParser<dim> function(n_components);
+          function.initialize(variable_names(dim), parts, {}, true);
+          Vector<double> value(n_components);
+          function.vector_value(Point<dim>(), value);
+        }
+      catch (...)
+        {
+          throw InputError(
+            entry_error(entry,
+                        "'" + expression +
+                          "' is not a valid muParser expression in the "
+                          "variables " +
+                          variable_names(dim)));
+        }
+    }
+  } // namespace
+
+  void
+  Parameters::declare(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the scene: 2 or 3.");
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::DirectoryName(),
+                      "Directory for the statistics, the parameters as run "
+                      "and the visualization files. Created if missing.");
+    prm.declare_entry("Gravity",
+                      "0, -9.81",
+                      Patterns::List(Patterns::Double(), 2, 3),
+                      "Gravitational acceleration vector (m/s^2), one "
+                      "component per dimension.");
+
+    prm.enter_subsection("Time");
+    {
+      prm.declare_entry("End time",
+                        "0.18",
+                        Patterns::Double(0),
+                        "Simulated time span (s), starting at t = 0.");
+      prm.declare_entry("Time step",
+                        "0.001",
+                        Patterns::Double(0),
+                        "Time step (s). With a positive target CFL number, "
+                        "this is the largest time step allowed.");
+      prm.declare_entry("Target CFL",
+                        "0",
+                        Patterns::Double(0),
+                        "If positive, the time step is chosen so that "
+                        "tau max|u| / h_min equals this number (the method "
+                        "is stable for CFL numbers well above 1).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Cavity");
+    {
+      prm.declare_entry("Lower corner",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Lower corner of the box-shaped cavity (m).");
+      prm.declare_entry("Upper corner",
+                        "0.28575, 0.142875",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Upper corner of the box-shaped cavity (m).");
+      prm.declare_entry("Coarse subdivisions",
+                        "2, 1",
+                        Patterns::List(Patterns::Integer(1), 2, 3),
+                        "Number of coarse cells per direction; choose them so "
+                        "that coarse cells are roughly cubes. Refinement "
+                        "levels count from this mesh.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Walls");
+    {
+      const std::array<std::string, 6> defaults = {
+        {"slip", "slip", "slip", "open", "slip", "open"}};
+      for (unsigned int w = 0; w < 6; ++w)
+        {
+          prm.declare_entry(
+            wall_names[w],
+            defaults[w],
+            Patterns::Selection("no-slip|slip|open|velocity"),
+            "Condition on the cavity wall " + wall_names[w] +
+              " (boundary id " + std::to_string(w) +
+              "): no-slip (u = 0), slip (u.n = 0, no tangential "
+              "stress), open (zero traction) or velocity (u given by the "
+              "entry '" +
+              wall_names[w] + " velocity'). z walls are used in 3D only.");
+          prm.declare_entry(wall_names[w] + " velocity",
+                            "0; 0",
+                            Patterns::Anything(),
+                            "Velocity imposed on wall " + wall_names[w] +
+                              " when its type is 'velocity': one muParser "
+                              "expression per component, separated by ';', "
+                              "in x, y, (z,) t.");
+        }
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry("Density",
+                        "1000",
+                        Patterns::Double(),
+                        "Density rho (kg/m^3), positive.");
+      prm.declare_entry("Solvent viscosity",
+                        "0.001",
+                        Patterns::Double(),
+                        "Solvent viscosity eta_s (Pa s), non-negative.");
+      prm.declare_entry("Polymer viscosity",
+                        "0",
+                        Patterns::Double(),
+                        "Polymer viscosity eta_p (Pa s), non-negative.");
+      prm.declare_entry("Relaxation time",
+                        "0",
+                        Patterns::Double(),
+                        "Relaxation time lambda (s). Zero selects the "
+                        "Newtonian regime with viscosity eta_s + eta_p.");
+      prm.declare_entry("Alpha",
+                        "1",
+                        Patterns::Integer(0, 1),
+                        "Factor of sigma in the constitutive law: 1 for "
+                        "liquids, 0 for the elastic-solid limit.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Initial liquid");
+    {
+      prm.declare_entry("Shape",
+                        "box",
+                        Patterns::Selection("box|ball|expression"),
+                        "Shape of the liquid at t = 0: a box, a ball, or "
+                        "the region where 'Level set expression' < 0.");
+      prm.declare_entry("Box lower corner",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Lower corner of the liquid box (m).");
+      prm.declare_entry("Box upper corner",
+                        "0.05715, 0.1143",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Upper corner of the liquid box (m).");
+      prm.declare_entry("Ball center",
+                        "0, 0",
+                        Patterns::List(Patterns::Double(), 2, 3),
+                        "Center of the liquid ball (m).");
+      prm.declare_entry("Ball radius",
+                        "0.1",
+                        Patterns::Double(0),
+                        "Radius of the liquid ball (m).");
+      prm.declare_entry("Level set expression",
+                        "",
+                        Patterns::Anything(),
+                        "muParser expression in x, y, (z): the liquid is "
+                        "where it is negative. It should be close to a "
+                        "signed distance (m) near its zero level.");
+      prm.declare_entry("Velocity",
+                        "0; 0",
+                        Patterns::Anything(),
+                        "Initial velocity (m/s): one muParser expression "
+                        "per component, separated by ';', in x, y, (z).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Mesh refinement");
+    {
+      prm.declare_entry("Minimum level",
+                        "2",
+                        Patterns::Integer(0, 20),
+                        "Refinement level of the empty part of the cavity.");
+      prm.declare_entry("Bulk level",
+                        "4",
+                        Patterns::Integer(0, 20),
+                        "Refinement level of the liquid away from its free "
+                        "surface.");
+      prm.declare_entry("Maximum level",
+                        "6",
+                        Patterns::Integer(0, 20),
+                        "Refinement level in the band around the free "
+                        "surface.");
+      prm.declare_entry("Band width",
+                        "4",
+                        Patterns::Double(1),
+                        "Half width of the finest band around the free "
+                        "surface, in finest cells. The band is widened to "
+                        "target CFL + 2 cells so that the surface cannot "
+                        "leave it within a step.");
+      prm.declare_entry("Extension layers",
+                        "4",
+                        Patterns::Integer(1, 100),
+                        "Number of cell layers beyond the liquid into which "
+                        "the velocity is extended for the characteristics.");
+      prm.declare_entry("Volume correction",
+                        "true",
+                        Patterns::Bool(),
+                        "Restore the initial liquid volume after each "
+                        "advection by a uniform normal shift of the free "
+                        "surface.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    {
+      prm.declare_entry("Tolerance",
+                        "1e-8",
+                        Patterns::Double(0, 1),
+                        "Relative residual reduction of the Krylov solver.");
+      prm.declare_entry("Maximum iterations",
+                        "1000",
+                        Patterns::Integer(1),
+                        "Iterations after which the Krylov solver gives up "
+                        "and stops the run.");
+      prm.declare_entry("Pressure stabilization",
+                        "0.25",
+                        Patterns::Double(0),
+                        "Factor c of the PSPG parameter of the Q1-Q1 "
+                        "element, tau_K = c / (rho/tau + 4 mu / h_K^2).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Interval",
+                        "10",
+                        Patterns::Integer(0),
+                        "Write visualization files every this many time "
+                        "steps (and at the first and last step); 0 writes "
+                        "none.");
+      prm.declare_entry("Verbose",
+                        "true",
+                        Patterns::Bool(),
+                        "Print a progress line per time step and a timing "
+                        "summary at the end.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  Parameters::parse(ParameterHandler &prm)
+  {
+    dimension        = prm.get_integer("Dimension");
+    output_directory = prm.get("Output directory");
+    gravity          = to_doubles(prm.get("Gravity"));
+
+    prm.enter_subsection("Time");
+    end_time   = prm.get_double("End time");
+    time_step  = prm.get_double("Time step");
+    target_cfl = prm.get_double("Target CFL");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Cavity");
+    cavity_lower = to_doubles(prm.get("Lower corner"));
+    cavity_upper = to_doubles(prm.get("Upper corner"));
+    coarse_subdivisions.clear();
+    for (const int n : Utilities::string_to_int(
+           Utilities::split_string_list(prm.get("Coarse subdivisions"), ',')))
+      coarse_subdivisions.push_back(n);
+    prm.leave_subsection();
+
+    prm.enter_subsection("Walls");
+    for (unsigned int w = 0; w < 6; ++w)
+      {
+        wall_type[w]     = wall_type_names.at(prm.get(wall_names[w]));
+        wall_velocity[w] = prm.get(wall_names[w] + " velocity");
+      }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    density           = prm.get_double("Density");
+    solvent_viscosity = prm.get_double("Solvent viscosity");
+    polymer_viscosity = prm.get_double("Polymer viscosity");
+    relaxation_time   = prm.get_double("Relaxation time");
+    alpha             = prm.get_integer("Alpha");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Initial liquid");
+    initial_shape        = prm.get("Shape");
+    box_lower            = to_doubles(prm.get("Box lower corner"));
+    box_upper            = to_doubles(prm.get("Box upper corner"));
+    ball_center          = to_doubles(prm.get("Ball center"));
+    ball_radius          = prm.get_double("Ball radius");
+    level_set_expression = prm.get("Level set expression");
+    initial_velocity     = prm.get("Velocity");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Mesh refinement");
+    min_level         = prm.get_integer("Minimum level");
+    bulk_level        = prm.get_integer("Bulk level");
+    max_level         = prm.get_integer("Maximum level");
+    band_width        = prm.get_double("Band width");
+    extension_layers  = prm.get_integer("Extension layers");
+    volume_correction = prm.get_bool("Volume correction");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    solver_tolerance       = prm.get_double("Tolerance");
+    solver_max_iterations  = prm.get_integer("Maximum iterations");
+    pressure_stabilization = prm.get_double("Pressure stabilization");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    output_interval = prm.get_integer("Interval");
+    verbose         = prm.get_bool("Verbose");
+    prm.leave_subsection();
+
+    check();
+  }
+
+  Regime
+  Parameters::regime() const
+  {
+    if (relaxation_time == 0)
+      return Regime::newtonian;
+    return alpha == 1 ? Regime::oldroyd_b : Regime::elastic_solid;
+  }
+
+  void
+  Parameters::check() const
+  {
+    const std::string dim_text = std::to_string(dimension);
+    auto              require_point = [&](const std::vector<double> &p,
+                             const std::string &         entry) {
+      require(p.size() == dimension,
+              entry,
+              "needs " + dim_text + " comma-separated numbers (Dimension = " +
+                dim_text + "), got " + std::to_string(p.size()));
+    };
+
+    require_point(gravity, "Gravity");
+    require(end_time > 0, "Time/End time", "must be positive");
+    require(time_step > 0, "Time/Time step", "must be positive");
+
+    require_point(cavity_lower, "Cavity/Lower corner");
+    require_point(cavity_upper, "Cavity/Upper corner");
+    require(coarse_subdivisions.size() == dimension,
+            "Cavity/Coarse subdivisions",
+            "needs " + dim_text + " comma-separated integers");
+    for (unsigned int d = 0; d < dimension; ++d)
+      require(cavity_lower[d] < cavity_upper[d],
+              "Cavity/Upper corner",
+              "must exceed 'Cavity/Lower corner' in every coordinate");
+
+    require(density > 0, "Material/Density", "must be positive");
+    require(solvent_viscosity >= 0,
+            "Material/Solvent viscosity",
+            "must be non-negative");
+    require(polymer_viscosity >= 0,
+            "Material/Polymer viscosity",
+            "must be non-negative");
+    require(relaxation_time >= 0,
+            "Material/Relaxation time",
+            "must be non-negative");
+    require(!(alpha == 0 && relaxation_time == 0),
+            "Material/Alpha",
+            "alpha = 0 (elastic solid) needs a positive relaxation time");
+    require(newtonian_viscosity() > 0 || relaxation_time > 0,
+            "Material/Solvent viscosity",
+            "a Newtonian liquid needs eta_s + eta_p > 0");
+    require(regime() == Regime::newtonian,
+            "Material/Relaxation time",
+            "a positive relaxation time selects the Oldroyd-B or elastic "
+            "regime, which this version of vefs does not implement yet; "
+            "allowed: 0 (Newtonian)");
+
+    if (initial_shape == "box")
+      {
+        require_point(box_lower, "Initial liquid/Box lower corner");
+        require_point(box_upper, "Initial liquid/Box upper corner");
+        for (unsigned int d = 0; d < dimension; ++d)
+          require(box_lower[d] < box_upper[d],
+                  "Initial liquid/Box upper corner",
+                  "must exceed 'Box lower corner' in every coordinate");
+      }
+    else if (initial_shape == "ball")
+      {
+        require_point(ball_center, "Initial liquid/Ball center");
+        require(ball_radius > 0,
+                "Initial liquid/Ball radius",
+                "must be positive");
+      }
+
+    require(min_level <= bulk_level && bulk_level <= max_level,
+            "Mesh refinement/Bulk level",
+            "levels must satisfy Minimum level <= Bulk level <= Maximum "
+            "level");
+
+    for (unsigned int w = 0; w < 2 * dimension; ++w)
+      if (wall_type[w] == WallType::velocity)
+        {
+          if (dimension == 2)
+            check_expression<2>(wall_velocity[w], 2, "Walls/" + wall_names[w] + " velocity");
+          else
+            check_expression<3>(wall_velocity[w], 3, "Walls/" + wall_names[w] + " velocity");
+        }
+
+    if (dimension == 2)
+      {
+        check_expression<2>(initial_velocity, 2, "Initial liquid/Velocity");
+        if (initial_shape == "expression")
+          check_expression<2>(level_set_expression,
+                              1,
+                              "Initial liquid/Level set expression");
+      }
+    else
+      {
+        check_expression<3>(initial_velocity, 3, "Initial liquid/Velocity");
+        if (initial_shape == "expression")
+          check_expression<3>(level_set_expression,
+                              1,
+                              "Initial liquid/Level set expression");
+      }
+  }
+} // namespace vefs

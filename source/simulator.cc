@@ -1,0 +1,207 @@
+#include <deal.II/grid/grid_generator.h>
+
+#include <vefs/characteristics.h>
+#include <vefs/free_surface.h>
+#include <vefs/initial_liquid.h>
+#include <vefs/simulator.h>
+#include <vefs/velocity_extension.h>
+
+#include <filesystem>
+#include <iomanip>
+
+namespace vefs
+{
+  namespace
+  {
+    template <int dim>
+    Point<dim>
+    to_point(const std::vector<double> &coordinates)
+    {
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = coordinates[d];
+      return p;
+    }
+
+    /** The output directory exists before any rank writes into it. */
+    const std::string &
+    prepared_directory(const std::string &directory, const MPI_Comm comm)
+    {
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        std::filesystem::create_directories(directory);
+      MPI_Barrier(comm);
+      return directory;
+    }
+  } // namespace
+
+  template <int dim>
+  Simulator<dim>::Simulator(const Parameters &parameters, const ParameterHandler &prm)
+    : parameters(parameters)
+    , comm(MPI_COMM_WORLD)
+    , pcout(std::cout,
+            parameters.verbose && Utilities::MPI::this_mpi_process(comm) == 0)
+    , timer(comm,
+            pcout,
+            parameters.verbose ? TimerOutput::summary : TimerOutput::never,
+            TimerOutput::wall_times)
+    , triangulation(comm,
+                    Triangulation<dim>::limit_level_difference_at_vertices,
+                    parallel::distributed::Triangulation<dim>::
+                      mesh_reconstruction_after_repartitioning)
+    , cavity(std::make_pair(to_point<dim>(parameters.cavity_lower),
+                            to_point<dim>(parameters.cavity_upper)))
+    , levels(parameters)
+    , fields(triangulation)
+    , flow(parameters, triangulation)
+    , statistics_file(prepared_directory(parameters.output_directory, comm), comm)
+    , visualization(parameters.output_directory)
+  {
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ofstream file(parameters.output_directory + "/parameters.prm");
+        prm.print_parameters(file, ParameterHandler::PRM);
+      }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::make_cavity()
+  {
+    std::vector<unsigned int> subdivisions(parameters.coarse_subdivisions.begin(),
+                                           parameters.coarse_subdivisions.end());
+    // colorize: boundary ids 0..2dim-1 for the walls x-, x+, y-, y+, z-, z+.
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              subdivisions,
+                                              cavity.get_boundary_points().first,
+                                              cavity.get_boundary_points().second,
+                                              true);
+    triangulation.refine_global(parameters.min_level);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::set_initial_state()
+  {
+    const auto level_set = make_initial_level_set<dim>(parameters);
+    const auto velocity  = make_initial_velocity<dim>(parameters);
+    fields.setup_dofs();
+    // Refine toward the initial surface, evaluating it exactly on each mesh.
+    do
+      fields.interpolate(*level_set, *velocity);
+    while (adapt_mesh(triangulation, fields, levels));
+    initial_volume = measure_liquid(fields).volume;
+    if (!(initial_volume > 0))
+      throw InputError("entry 'Initial liquid/Shape': the initial liquid "
+                       "does not intersect the cavity");
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::choose_time_step(const double max_velocity) const
+  {
+    double tau = parameters.time_step;
+    if (parameters.target_cfl > 0 && max_velocity > 0)
+      tau = std::min(tau,
+                     parameters.target_cfl * levels.finest_cell_size /
+                       max_velocity);
+    return tau;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::run()
+  {
+    pcout << "vefs: " << dim << "D Newtonian free-surface flow on "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s), output in "
+          << parameters.output_directory << "/" << std::endl;
+    {
+      TimerOutput::Scope scope(timer, "initial state");
+      make_cavity();
+      set_initial_state();
+    }
+
+    Vector<float>       liquid_fraction = liquid_fractions(fields);
+    StepStatistics<dim> statistics;
+    flow.setup(liquid_fraction, 0);
+    report(statistics, liquid_fraction);
+
+    typename TransportedFields<dim>::VectorType known;
+    while (statistics.time < parameters.end_time * (1 - 1e-12))
+      {
+        ++statistics.step;
+        const double tau = std::min(choose_time_step(statistics.max_velocity),
+                                    parameters.end_time - statistics.time);
+        statistics.tau = tau;
+        statistics.cfl = tau * statistics.max_velocity / levels.finest_cell_size;
+        {
+          TimerOutput::Scope scope(timer, "1 advection");
+          advect_along_characteristics(fields, tau, cavity);
+          if (parameters.volume_correction)
+            correct_volume(fields, initial_volume);
+        }
+        {
+          TimerOutput::Scope scope(timer, "2 mesh adaptation");
+          adapt_mesh(triangulation, fields, levels);
+          liquid_fraction = liquid_fractions(fields);
+        }
+        {
+          TimerOutput::Scope scope(timer, "3 diffusion: setup");
+          flow.setup(liquid_fraction, statistics.time + tau);
+        }
+        {
+          TimerOutput::Scope scope(timer, "3 diffusion: assembly");
+          flow.assemble(fields, tau);
+        }
+        {
+          TimerOutput::Scope scope(timer, "3 diffusion: solve");
+          statistics.linear_iterations = flow.solve();
+        }
+        {
+          TimerOutput::Scope scope(timer, "velocity extension");
+          fields.initialize_vector(known);
+          flow.copy_velocity_to(fields, known);
+          extend_velocity(fields, known, parameters.extension_layers);
+        }
+        statistics.time += tau;
+        report(statistics, liquid_fraction);
+      }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::report(StepStatistics<dim> &statistics,
+                         const Vector<float> &liquid_fraction)
+  {
+    {
+      TimerOutput::Scope scope(timer, "postprocessing");
+      measure_step(parameters, fields, flow, initial_volume, statistics);
+      statistics.wall_time = wall_clock.wall_time();
+      statistics_file.write(statistics);
+    }
+
+    const bool last = statistics.time >= parameters.end_time * (1 - 1e-12);
+    if (parameters.output_interval > 0 &&
+        (statistics.step % parameters.output_interval == 0 || last))
+      {
+        TimerOutput::Scope scope(timer, "output");
+        visualization.write(fields, flow, liquid_fraction, statistics.time);
+      }
+
+    if (statistics.step == 0)
+      return;
+    const double per_step = statistics.wall_time / statistics.step;
+    const double left =
+      per_step * (parameters.end_time - statistics.time) / statistics.tau;
+    pcout << "step " << std::setw(5) << statistics.step << "  t "
+          << std::setprecision(4) << std::setw(10) << statistics.time
+          << "  CFL " << std::setw(6) << statistics.cfl << "  its "
+          << std::setw(3) << statistics.linear_iterations << "  dV/V "
+          << std::setw(10) << statistics.volume_change << "  cells "
+          << std::setw(7) << statistics.cells << "  " << std::setprecision(3)
+          << per_step << " s/step  ~" << std::setprecision(3) << left
+          << " s left" << std::endl;
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace vefs

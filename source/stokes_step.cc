@@ -1,0 +1,512 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_renumbering.h>
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_nothing.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/hp/fe_values.h>
+
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/block_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include <deal.II/numerics/vector_tools_boundary.h>
+
+#include <vefs/free_surface.h>
+#include <vefs/initial_liquid.h>
+#include <vefs/stokes_step.h>
+
+namespace vefs
+{
+  namespace
+  {
+    /** A wall velocity as a function of velocity and pressure components. */
+    template <int dim>
+    class FlowBoundaryValues : public Function<dim>
+    {
+    public:
+      explicit FlowBoundaryValues(const Function<dim> &velocity)
+        : Function<dim>(dim + 1)
+        , velocity(velocity)
+      {}
+
+      double
+      value(const Point<dim> &p, const unsigned int component) const override
+      {
+        return component < dim ? velocity.value(p, component) : 0.;
+      }
+
+    private:
+      const Function<dim> &velocity;
+    };
+
+    /**
+     * Block-triangular preconditioner of [A B^T; B -C]: one AMG V-cycle for
+     * A and the Cahouet-Chabard approximation of the Schur complement,
+     * S^-1 ~ mu M_p^-1 + L_w^-1, with L_w the pressure Laplacian weighted by
+     * tau/rho + tau_K (lumped mass; one AMG V-cycle for L_w). It covers the
+     * mass-dominated and the viscous-dominated ends alike.
+     */
+    class BlockPreconditioner
+    {
+    public:
+      BlockPreconditioner(const TrilinosWrappers::BlockSparseMatrix &system,
+                          const TrilinosWrappers::PreconditionAMG &  velocity_amg,
+                          const TrilinosWrappers::PreconditionAMG &  laplace_amg,
+                          const TrilinosWrappers::MPI::Vector &      scaled_inverse_mass)
+        : system(system)
+        , velocity_amg(velocity_amg)
+        , laplace_amg(laplace_amg)
+        , scaled_inverse_mass(scaled_inverse_mass)
+        , tmp(system.block(0, 0).locally_owned_range_indices(),
+              scaled_inverse_mass.get_mpi_communicator())
+      {}
+
+      void
+      vmult(TrilinosWrappers::MPI::BlockVector &      dst,
+            const TrilinosWrappers::MPI::BlockVector &src) const
+      {
+        // x_p = -S^-1 r_p
+        laplace_amg.vmult(dst.block(1), src.block(1));
+        TrilinosWrappers::MPI::Vector mass_part(src.block(1));
+        mass_part.scale(scaled_inverse_mass);
+        dst.block(1) += mass_part;
+        dst.block(1) *= -1;
+        // x_u = A^-1 (r_u - B^T x_p)
+        system.block(0, 1).vmult(tmp, dst.block(1));
+        tmp.sadd(-1, src.block(0));
+        velocity_amg.vmult(dst.block(0), tmp);
+      }
+
+    private:
+      const TrilinosWrappers::BlockSparseMatrix &system;
+      const TrilinosWrappers::PreconditionAMG &  velocity_amg;
+      const TrilinosWrappers::PreconditionAMG &  laplace_amg;
+      const TrilinosWrappers::MPI::Vector &      scaled_inverse_mass;
+      mutable TrilinosWrappers::MPI::Vector      tmp;
+    };
+  } // namespace
+
+  template <int dim>
+  StokesStep<dim>::StokesStep(
+    const Parameters &                               parameters,
+    const parallel::distributed::Triangulation<dim> &triangulation)
+    : parameters(parameters)
+    , comm(triangulation.get_communicator())
+    , dof_handler(triangulation)
+    , viscosity(parameters.newtonian_viscosity())
+  {
+    fe_collection.push_back(FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1));
+    fe_collection.push_back(
+      FESystem<dim>(FE_Nothing<dim>(), dim, FE_Nothing<dim>(), 1));
+    for (unsigned int w = 0; w < 2 * dim; ++w)
+      if (parameters.wall_type[w] == WallType::velocity)
+        wall_velocity[w] = make_wall_velocity<dim>(parameters, w);
+  }
+
+  template <int dim>
+  bool
+  StokesStep<dim>::is_liquid(
+    const typename Triangulation<dim>::active_cell_iterator &cell) const
+  {
+    return typename DoFHandler<dim>::active_cell_iterator(
+             &dof_handler.get_triangulation(),
+             cell->level(),
+             cell->index(),
+             &dof_handler)
+             ->active_fe_index() == liquid_index;
+  }
+
+  template <int dim>
+  bool
+  StokesStep<dim>::is_free_surface(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const unsigned int                                    face) const
+  {
+    if (cell->at_boundary(face))
+      return parameters.wall_type[cell->face(face)->boundary_id()] ==
+             WallType::open;
+    if (cell->face(face)->has_children())
+      {
+        for (unsigned int s = 0; s < cell->face(face)->n_children(); ++s)
+          if (cell->neighbor_child_on_subface(face, s)->active_fe_index() !=
+              liquid_index)
+            return true;
+        return false;
+      }
+    return cell->neighbor(face)->active_fe_index() != liquid_index;
+  }
+
+  template <int dim>
+  void
+  StokesStep<dim>::setup(const Vector<float> &liquid_fraction,
+                         const double         time)
+  {
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        cell->set_active_fe_index(
+          vefs::is_liquid(liquid_fraction[cell->active_cell_index()]) ?
+            liquid_index :
+                                                                  empty_index);
+    dof_handler.distribute_dofs(fe_collection);
+
+    std::vector<unsigned int> block_component(dim + 1, 0);
+    block_component[dim] = 1;
+    DoFRenumbering::component_wise(dof_handler, block_component);
+    const auto dofs_per_block =
+      DoFTools::count_dofs_per_fe_block(dof_handler, block_component);
+    const types::global_dof_index n_u = dofs_per_block[0];
+    const types::global_dof_index n_p = dofs_per_block[1];
+
+    const IndexSet owned = dof_handler.locally_owned_dofs();
+    IndexSet       relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    owned_partitioning    = {owned.get_view(0, n_u), owned.get_view(n_u, n_u + n_p)};
+    relevant_partitioning = {relevant.get_view(0, n_u),
+                             relevant.get_view(n_u, n_u + n_p)};
+
+    constraints.clear();
+    constraints.reinit(relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    make_wall_constraints(time);
+    constraints.close();
+
+    Table<2, DoFTools::Coupling> coupling(dim + 1, dim + 1);
+    for (unsigned int i = 0; i < dim + 1; ++i)
+      for (unsigned int j = 0; j < dim + 1; ++j)
+        coupling[i][j] = DoFTools::always;
+    TrilinosWrappers::BlockSparsityPattern pattern(owned_partitioning,
+                                                   owned_partitioning,
+                                                   relevant_partitioning,
+                                                   comm);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    coupling,
+                                    pattern,
+                                    constraints,
+                                    false,
+                                    Utilities::MPI::this_mpi_process(comm));
+    pattern.compress();
+    system_matrix.clear();
+    system_matrix.reinit(pattern);
+
+    for (unsigned int i = 0; i < dim + 1; ++i)
+      for (unsigned int j = 0; j < dim + 1; ++j)
+        coupling[i][j] =
+          (i == dim && j == dim) ? DoFTools::always : DoFTools::none;
+    TrilinosWrappers::BlockSparsityPattern schur_pattern(owned_partitioning,
+                                                         owned_partitioning,
+                                                         relevant_partitioning,
+                                                         comm);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    coupling,
+                                    schur_pattern,
+                                    constraints,
+                                    false,
+                                    Utilities::MPI::this_mpi_process(comm));
+    schur_pattern.compress();
+    schur_matrix.clear();
+    schur_matrix.reinit(schur_pattern);
+
+    system_rhs.reinit(owned_partitioning, comm);
+    lumped_pressure_mass.reinit(owned_partitioning, comm);
+    solution.reinit(owned_partitioning, relevant_partitioning, comm);
+  }
+
+  template <int dim>
+  void
+  StokesStep<dim>::make_wall_constraints(const double time)
+  {
+    const FEValuesExtractors::Vector velocity(0);
+    for (unsigned int w = 0; w < 2 * dim; ++w)
+      {
+        const types::boundary_id id = w;
+        switch (parameters.wall_type[w])
+          {
+            case WallType::no_slip:
+              VectorTools::interpolate_boundary_values(
+                dof_handler,
+                id,
+                Functions::ZeroFunction<dim>(dim + 1),
+                constraints,
+                fe_collection.component_mask(velocity));
+              break;
+            case WallType::slip:
+              {
+                // Axis-aligned wall: the normal component is one velocity
+                // component.
+                std::vector<bool> normal(dim + 1, false);
+                normal[w / 2] = true;
+                VectorTools::interpolate_boundary_values(
+                  dof_handler,
+                  id,
+                  Functions::ZeroFunction<dim>(dim + 1),
+                  constraints,
+                  ComponentMask(normal));
+                break;
+              }
+            case WallType::velocity:
+              {
+                wall_velocity[w]->set_time(time);
+                VectorTools::interpolate_boundary_values(
+                  dof_handler,
+                  id,
+                  FlowBoundaryValues<dim>(*wall_velocity[w]),
+                  constraints,
+                  fe_collection.component_mask(velocity));
+                break;
+              }
+            case WallType::open:
+              break;
+          }
+      }
+  }
+
+  template <int dim>
+  void
+  StokesStep<dim>::assemble(const TransportedFields<dim> &fields,
+                            const double                  tau)
+  {
+    system_matrix         = 0;
+    schur_matrix          = 0;
+    system_rhs            = 0;
+    lumped_pressure_mass  = 0;
+
+    const double   rho = parameters.density;
+    const double   mu  = viscosity;
+    Tensor<1, dim> gravity;
+    for (unsigned int d = 0; d < dim; ++d)
+      gravity[d] = parameters.gravity[d];
+    const double cavity_diameter = [&]() {
+      double s = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        s += std::pow(parameters.cavity_upper[d] - parameters.cavity_lower[d], 2);
+      return std::sqrt(s);
+    }();
+
+    const QGauss<dim>     quadrature(2);
+    const QGauss<dim - 1> face_quadrature(2);
+    hp::QCollection<dim>  q_collection(quadrature, quadrature);
+    hp::FEValues<dim>     hp_fe_values(fe_collection,
+                                   q_collection,
+                                   update_values | update_gradients |
+                                     update_JxW_values);
+    FEValues<dim>         advected(fields.mapping, fields.fe, quadrature, update_values);
+    FEFaceValues<dim>     face_values(fe_collection[liquid_index],
+                                  face_quadrature,
+                                  update_values | update_JxW_values);
+
+    const FEValuesExtractors::Vector velocity(0);
+    const FEValuesExtractors::Scalar pressure(dim);
+    const unsigned int dofs_per_cell = fe_collection[liquid_index].n_dofs_per_cell();
+    const unsigned int n_q           = quadrature.size();
+
+    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+    FullMatrix<double> cell_schur(dofs_per_cell, dofs_per_cell);
+    Vector<double>     cell_rhs(dofs_per_cell);
+    Vector<double>     cell_mass(dofs_per_cell);
+    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    std::vector<Tensor<1, dim>>          u_star(n_q);
+    std::vector<Tensor<1, dim>>          phi_u(dofs_per_cell);
+    std::vector<SymmetricTensor<2, dim>> eps_u(dofs_per_cell);
+    std::vector<double>                  div_u(dofs_per_cell);
+    std::vector<double>                  phi_p(dofs_per_cell);
+    std::vector<Tensor<1, dim>>          grad_p(dofs_per_cell);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index)
+        {
+          hp_fe_values.reinit(cell);
+          const FEValues<dim> &fe_values = hp_fe_values.get_present_fe_values();
+          advected.reinit(fields.cell_of(cell));
+          advected[velocity].get_function_values(fields.fields, u_star);
+
+          const double h     = cell->minimum_vertex_distance();
+          const double tau_K = parameters.pressure_stabilization /
+                               (rho / tau + 4 * mu / (h * h));
+          const double weight = tau / rho + tau_K;
+
+          cell_matrix = 0;
+          cell_schur  = 0;
+          cell_rhs    = 0;
+          cell_mass   = 0;
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              for (unsigned int k = 0; k < dofs_per_cell; ++k)
+                {
+                  phi_u[k]  = fe_values[velocity].value(k, q);
+                  eps_u[k]  = fe_values[velocity].symmetric_gradient(k, q);
+                  div_u[k]  = fe_values[velocity].divergence(k, q);
+                  phi_p[k]  = fe_values[pressure].value(k, q);
+                  grad_p[k] = fe_values[pressure].gradient(k, q);
+                }
+              const double         JxW     = fe_values.JxW(q);
+              const Tensor<1, dim> forcing = rho / tau * u_star[q] + rho * gravity;
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                    {
+                      cell_matrix(i, j) +=
+                        (rho / tau * phi_u[i] * phi_u[j] +
+                         2 * mu * eps_u[i] * eps_u[j] - div_u[i] * phi_p[j] -
+                         phi_p[i] * div_u[j] -
+                         tau_K * (rho / tau * phi_u[j] + grad_p[j]) * grad_p[i]) *
+                        JxW;
+                      cell_schur(i, j) +=
+                        (weight * grad_p[i] * grad_p[j] +
+                         1e-3 * weight / (cavity_diameter * cavity_diameter) *
+                           phi_p[i] * phi_p[j]) *
+                        JxW;
+                    }
+                  cell_rhs(i) +=
+                    (forcing * phi_u[i] - tau_K * forcing * grad_p[i]) * JxW;
+                  cell_mass(i) += phi_p[i] / mu * JxW;
+                }
+            }
+
+          // In the Schur preconditioner the pressure vanishes on the free
+          // surface (zero traction): a penalty there keeps L_w regular.
+          for (const unsigned int f : cell->face_indices())
+            if (is_free_surface(cell, f))
+              {
+                face_values.reinit(cell, f);
+                for (const unsigned int q : face_values.quadrature_point_indices())
+                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                    for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                      cell_schur(i, j) +=
+                        10 * weight / h * face_values[pressure].value(i, q) *
+                        face_values[pressure].value(j, q) * face_values.JxW(q);
+              }
+
+          cell->get_dof_indices(dof_indices);
+          constraints.distribute_local_to_global(
+            cell_matrix, cell_rhs, dof_indices, system_matrix, system_rhs);
+          constraints.distribute_local_to_global(cell_schur, dof_indices, schur_matrix);
+          constraints.distribute_local_to_global(cell_mass,
+                                                 dof_indices,
+                                                 lumped_pressure_mass);
+        }
+    system_matrix.compress(VectorOperation::add);
+    schur_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+    lumped_pressure_mass.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  unsigned int
+  StokesStep<dim>::solve()
+  {
+    // AMG for the velocity block, told about the constant modes (one per
+    // velocity component) so that aggregation treats them as near-kernel.
+    std::vector<std::vector<bool>> constant_modes(dim);
+    {
+      const IndexSet &owned_u = owned_partitioning[0];
+      for (unsigned int d = 0; d < dim; ++d)
+        constant_modes[d].assign(owned_u.n_elements(), false);
+      std::vector<types::global_dof_index> dof_indices;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index)
+          {
+            const auto &fe = cell->get_fe();
+            dof_indices.resize(fe.n_dofs_per_cell());
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const unsigned int c = fe.system_to_component_index(i).first;
+                if (c < dim && owned_u.is_element(dof_indices[i]))
+                  constant_modes[c][owned_u.index_within_set(dof_indices[i])] =
+                    true;
+              }
+          }
+    }
+    TrilinosWrappers::PreconditionAMG                 velocity_amg;
+    TrilinosWrappers::PreconditionAMG::AdditionalData velocity_data;
+    velocity_data.elliptic              = true;
+    velocity_data.higher_order_elements = false;
+    velocity_data.smoother_sweeps       = 2;
+    velocity_data.aggregation_threshold = 0.02;
+    velocity_data.constant_modes        = constant_modes;
+    velocity_amg.initialize(system_matrix.block(0, 0), velocity_data);
+
+    TrilinosWrappers::PreconditionAMG                 laplace_amg;
+    TrilinosWrappers::PreconditionAMG::AdditionalData laplace_data;
+    laplace_data.elliptic = true;
+    laplace_amg.initialize(schur_matrix.block(1, 1), laplace_data);
+
+    TrilinosWrappers::MPI::Vector scaled_inverse_mass(lumped_pressure_mass.block(1));
+    for (const auto i : scaled_inverse_mass.locally_owned_elements())
+      {
+        const double m = lumped_pressure_mass.block(1)(i);
+        scaled_inverse_mass(i) = m > 0 ? 1. / m : 0.;
+      }
+    scaled_inverse_mass.compress(VectorOperation::insert);
+
+    const BlockPreconditioner preconditioner(system_matrix,
+                                             velocity_amg,
+                                             laplace_amg,
+                                             scaled_inverse_mass);
+
+    BlockVector distributed(owned_partitioning, comm);
+    constraints.set_zero(distributed);
+    const double  rhs_norm = system_rhs.l2_norm();
+    SolverControl control(parameters.solver_max_iterations,
+                          std::max(parameters.solver_tolerance * rhs_norm, 1e-300));
+    SolverFGMRES<BlockVector> solver(control,
+                                     SolverFGMRES<BlockVector>::AdditionalData(100));
+    try
+      {
+        if (rhs_norm > 0)
+          solver.solve(system_matrix, distributed, system_rhs, preconditioner);
+      }
+    catch (const SolverControl::NoConvergence &failure)
+      {
+        throw SolverError(
+          "the Stokes solver did not converge: residual " +
+          std::to_string(failure.last_residual) + " after " +
+          std::to_string(failure.last_step) + " iterations (tolerance " +
+          std::to_string(control.tolerance()) +
+          "). Reduce 'Time/Time step' or raise 'Solver/Maximum iterations'.");
+      }
+    constraints.distribute(distributed);
+    AssertThrow(std::isfinite(distributed.l2_norm()),
+                ExcMessage("The Stokes solution is not finite."));
+    solution = distributed;
+    return control.last_step();
+  }
+
+  template <int dim>
+  void
+  StokesStep<dim>::copy_velocity_to(
+    TransportedFields<dim> &                    fields,
+    typename TransportedFields<dim>::VectorType &known) const
+  {
+    known = 0;
+    // Owned and ghost liquid cells: every owned node next to the liquid is a
+    // vertex of one of them.
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial() && cell->active_fe_index() == liquid_index)
+        {
+          const auto transport_cell = fields.cell_of(cell);
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const auto first = transport_cell->vertex_dof_index(v, 0);
+              if (!fields.owned_dofs.is_element(first))
+                continue;
+              for (unsigned int d = 0; d < dim; ++d)
+                fields.fields(transport_cell->vertex_dof_index(v, d)) =
+                  solution(cell->vertex_dof_index(v, d, liquid_index));
+              known(first) = 1;
+            }
+        }
+    fields.finalize();
+    known.update_ghost_values();
+  }
+
+  template class StokesStep<2>;
+  template class StokesStep<3>;
+} // namespace vefs

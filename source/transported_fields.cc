@@ -1,0 +1,89 @@
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+
+#include <vefs/transported_fields.h>
+
+namespace vefs
+{
+  template <int dim>
+  TransportedFields<dim>::TransportedFields(
+    const parallel::distributed::Triangulation<dim> &triangulation)
+    : fe(FE_Q<dim>(1), n_components)
+    , dof_handler(triangulation)
+  {}
+
+  template <int dim>
+  void
+  TransportedFields<dim>::setup_dofs()
+  {
+    dof_handler.distribute_dofs(fe);
+    owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+
+    constraints.clear();
+    constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    constraints.close();
+
+    initialize_vector(fields);
+
+    // FE_Q(1)^(dim+1): the i-th degree of freedom of a vertex belongs to
+    // component i, so one vertex carries all fields of one node.
+    owned_nodes.clear();
+    std::vector<bool> seen(owned_dofs.n_elements(), false);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const auto first = cell->vertex_dof_index(v, 0);
+            if (!owned_dofs.is_element(first) ||
+                constraints.is_constrained(first))
+              continue;
+            const auto local = owned_dofs.index_within_set(first);
+            if (seen[local])
+              continue;
+            seen[local] = true;
+            Node node;
+            node.point = cell->vertex(v);
+            for (unsigned int c = 0; c < n_components; ++c)
+              node.dofs[c] = cell->vertex_dof_index(v, c);
+            owned_nodes.push_back(node);
+          }
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::initialize_vector(VectorType &vector) const
+  {
+    vector.reinit(owned_dofs,
+                  relevant_dofs,
+                  dof_handler.get_triangulation().get_communicator());
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::interpolate(const Function<dim> &level_set,
+                                      const Function<dim> &velocity)
+  {
+    for (const auto &node : owned_nodes)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          fields(node.dofs[d]) = velocity.value(node.point, d);
+        fields(node.dofs[level_set_component]) = level_set.value(node.point);
+      }
+    finalize();
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::finalize()
+  {
+    fields.update_ghost_values();
+    constraints.distribute(fields);
+    fields.update_ghost_values();
+  }
+
+  template class TransportedFields<2>;
+  template class TransportedFields<3>;
+} // namespace vefs
