@@ -5,6 +5,7 @@
 
 #include <vefs/parameters.h>
 
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -58,6 +59,12 @@ namespace vefs
               entry,
               "needs " + std::to_string(n_components) +
                 " expression(s) separated by ';', got '" + expression + "'");
+      // muParser reports its own diagnosis on the standard streams; the
+      // user gets ours, naming the entry, instead.
+      std::ostringstream silenced;
+      auto *const        out_buffer = std::cout.rdbuf(silenced.rdbuf());
+      auto *const        err_buffer = std::cerr.rdbuf(silenced.rdbuf());
+      bool               valid      = true;
       try
         {
           FunctionParser<dim> function(n_components);
@@ -67,13 +74,17 @@ namespace vefs
         }
       catch (...)
         {
-          throw InputError(
+          valid = false;
+        }
+      std::cout.rdbuf(out_buffer);
+      std::cerr.rdbuf(err_buffer);
+      if (!valid)
+        throw InputError(
             entry_error(entry,
                         "'" + expression +
                           "' is not a valid muParser expression in the "
                           "variables " +
                           variable_names(dim)));
-        }
     }
   } // namespace
 
