@@ -84,9 +84,22 @@ namespace vefs
   make_initial_level_set(const Parameters &parameters)
   {
     if (parameters.initial_shape == "box")
-      return std::make_unique<BoxDistance<dim>>(
-        to_point<dim>(parameters.box_lower),
-        to_point<dim>(parameters.box_upper));
+      {
+        // A box face on (or beyond) a cavity wall is not a free surface:
+        // move it out of the cavity so that the liquid wets that wall.
+        Point<dim> lower = to_point<dim>(parameters.box_lower);
+        Point<dim> upper = to_point<dim>(parameters.box_upper);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double size =
+              parameters.cavity_upper[d] - parameters.cavity_lower[d];
+            if (lower[d] <= parameters.cavity_lower[d] + 1e-12 * size)
+              lower[d] = parameters.cavity_lower[d] - size;
+            if (upper[d] >= parameters.cavity_upper[d] - 1e-12 * size)
+              upper[d] = parameters.cavity_upper[d] + size;
+          }
+        return std::make_unique<BoxDistance<dim>>(lower, upper);
+      }
     if (parameters.initial_shape == "ball")
       return std::make_unique<BallDistance<dim>>(
         to_point<dim>(parameters.ball_center), parameters.ball_radius);

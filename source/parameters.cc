@@ -209,7 +209,8 @@ namespace vefs
       prm.declare_entry("Box lower corner",
                         "0, 0",
                         Patterns::List(Patterns::Double(), 2, 3),
-                        "Lower corner of the liquid box (m).");
+                        "Lower corner of the liquid box (m). A box face on a cavity wall "
+                        "wets that wall (it is not a free surface).");
       prm.declare_entry("Box upper corner",
                         "0.05715, 0.1143",
                         Patterns::List(Patterns::Double(), 2, 3),
