@@ -23,28 +23,66 @@ namespace vefs
       return q;
     }
 
+    /**
+     * The fields at arbitrary points: in the local part of the mesh (owned
+     * and ghost cells) by Q1 interpolation in the cell the locator finds,
+     * elsewhere through RemotePointEvaluation on the ranks that own them.
+     */
     template <int dim>
     std::vector<Tensor<1, dim + 1>>
     evaluate_at(const std::vector<Point<dim>> &points,
-                const TransportedFields<dim> & fields)
+                const TransportedFields<dim> & fields,
+                const BoxMeshLocator<dim> &    locator)
     {
+      std::vector<Tensor<1, dim + 1>> values(points.size());
+      std::vector<unsigned int>       remote;
+      for (unsigned int i = 0; i < points.size(); ++i)
+        {
+          const auto cell = locator.locate(points[i]);
+          if (cell->is_artificial())
+            {
+              remote.push_back(i);
+              continue;
+            }
+          const Point<dim> xi = BoxMeshLocator<dim>::unit_point(cell, points[i]);
+          const auto dof_cell = fields.cell_of(cell);
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              double weight = 1;
+              for (unsigned int d = 0; d < dim; ++d)
+                weight *= ((v >> d) & 1) ? xi[d] : 1 - xi[d];
+              for (unsigned int c = 0; c < dim + 1; ++c)
+                values[i][c] +=
+                  weight * fields.fields(dof_cell->vertex_dof_index(v, c));
+            }
+        }
+
+      const auto &triangulation = fields.dof_handler.get_triangulation();
+      if (!Utilities::MPI::logical_or(!remote.empty(),
+                                      triangulation.get_communicator()))
+        return values;
+
+      std::vector<Point<dim>> remote_points;
+      for (const unsigned int i : remote)
+        remote_points.push_back(points[i]);
       Utilities::MPI::RemotePointEvaluation<dim> evaluation;
-      evaluation.reinit(points,
-                        fields.dof_handler.get_triangulation(),
-                        fields.mapping);
+      evaluation.reinit(remote_points, triangulation, fields.mapping);
       AssertThrow(evaluation.all_points_found(),
                   ExcMessage("A characteristic foot lies outside the mesh."));
-      return VectorTools::point_values<dim + 1>(evaluation,
-                                                fields.dof_handler,
-                                                fields.fields);
+      const auto remote_values = VectorTools::point_values<dim + 1>(
+        evaluation, fields.dof_handler, fields.fields);
+      for (unsigned int k = 0; k < remote.size(); ++k)
+        values[remote[k]] = remote_values[k];
+      return values;
     }
   } // namespace
 
   template <int dim>
   void
   advect_along_characteristics(TransportedFields<dim> &fields,
-                               const double            tau,
-                               const BoundingBox<dim> &cavity)
+                               const double               tau,
+                               const BoundingBox<dim> &   cavity,
+                               const BoxMeshLocator<dim> &locator)
   {
     const auto &nodes = fields.nodes();
 
@@ -56,7 +94,7 @@ namespace vefs
           u[d] = fields.fields(nodes[i].dofs[d]);
         points[i] = clamp_to(cavity, nodes[i].point - 0.5 * tau * u);
       }
-    const auto at_midpoints = evaluate_at(points, fields);
+    const auto at_midpoints = evaluate_at(points, fields, locator);
 
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
@@ -65,7 +103,7 @@ namespace vefs
           u[d] = at_midpoints[i][d];
         points[i] = clamp_to(cavity, nodes[i].point - tau * u);
       }
-    const auto at_feet = evaluate_at(points, fields);
+    const auto at_feet = evaluate_at(points, fields, locator);
 
     for (unsigned int i = 0; i < nodes.size(); ++i)
       for (unsigned int c = 0; c < dim + 1; ++c)
@@ -76,9 +114,11 @@ namespace vefs
   template void
   advect_along_characteristics<2>(TransportedFields<2> &,
                                   const double,
-                                  const BoundingBox<2> &);
+                                  const BoundingBox<2> &,
+                                  const BoxMeshLocator<2> &);
   template void
   advect_along_characteristics<3>(TransportedFields<3> &,
                                   const double,
-                                  const BoundingBox<3> &);
+                                  const BoundingBox<3> &,
+                                  const BoxMeshLocator<3> &);
 } // namespace vefs

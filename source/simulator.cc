@@ -75,6 +75,9 @@ namespace vefs
                                               cavity.get_boundary_points().first,
                                               cavity.get_boundary_points().second,
                                               true);
+    locator = std::make_unique<BoxMeshLocator<dim>>(triangulation,
+                                                    cavity,
+                                                    subdivisions);
     triangulation.refine_global(parameters.min_level);
   }
 
@@ -135,7 +138,7 @@ namespace vefs
         statistics.cfl = tau * statistics.max_velocity / levels.finest_cell_size;
         {
           TimerOutput::Scope scope(timer, "1 advection");
-          advect_along_characteristics(fields, tau, cavity);
+          advect_along_characteristics(fields, tau, cavity, *locator);
           if (parameters.volume_correction)
             correct_volume(fields, initial_volume);
         }

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/bounding_box.h>
 
+#include <vefs/box_mesh_locator.h>
 #include <vefs/transported_fields.h>
 
 namespace vefs
@@ -12,14 +13,16 @@ namespace vefs
    * takes at a node x its old value at the foot of the characteristic,
    *   X(x) = x - tau u(x - tau/2 u(x)),
    * a two-stage trace, second order in the foot position. Feet may lie many
-   * cells away and on other MPI ranks (RemotePointEvaluation finds them);
-   * feet outside the cavity are moved back onto its boundary.
+   * cells away: in the local part of the mesh the locator finds their cell,
+   * on other MPI ranks RemotePointEvaluation does. Feet outside the cavity
+   * are moved back onto its boundary.
    */
   template <int dim>
   void
   advect_along_characteristics(TransportedFields<dim> &fields,
-                               const double            tau,
-                               const BoundingBox<dim> &cavity);
+                               const double               tau,
+                               const BoundingBox<dim> &   cavity,
+                               const BoxMeshLocator<dim> &locator);
 } // namespace vefs
 
 #endif

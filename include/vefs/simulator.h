@@ -7,6 +7,7 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <vefs/box_mesh_locator.h>
 #include <vefs/mesh_adaptation.h>
 #include <vefs/parameters.h>
 #include <vefs/postprocessing.h>
@@ -50,6 +51,7 @@ namespace vefs
     mutable TimerOutput                       timer;
     parallel::distributed::Triangulation<dim> triangulation;
     BoundingBox<dim>                          cavity;
+    std::unique_ptr<BoxMeshLocator<dim>>      locator;
     const MeshLevels                          levels;
     TransportedFields<dim>                    fields;
     StokesStep<dim>                           flow;

@@ -1,0 +1,46 @@
+#ifndef vefs_box_mesh_locator_h
+#define vefs_box_mesh_locator_h
+
+#include <deal.II/base/bounding_box.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <vector>
+
+namespace vefs
+{
+  using namespace dealii;
+
+  /**
+   * Finds the active cell around a point of a box-shaped cavity meshed by
+   * isotropic refinement of a regular grid of axis-aligned coarse cells: the
+   * coarse cell follows from the coordinates, each child from a comparison
+   * with its parent's center. Cost: one step per level, no search structure
+   * to rebuild after the mesh changes (general locators such as
+   * RemotePointEvaluation rebuild theirs at every call).
+   */
+  template <int dim>
+  class BoxMeshLocator
+  {
+  public:
+    BoxMeshLocator(const Triangulation<dim> &      triangulation,
+                   const BoundingBox<dim> &        cavity,
+                   const std::vector<unsigned int> &subdivisions);
+
+    /** The active cell containing @p p; it may be artificial on this rank. */
+    typename Triangulation<dim>::active_cell_iterator
+    locate(const Point<dim> &p) const;
+
+    /** Coordinates of @p p in the unit cell of the axis-aligned @p cell. */
+    static Point<dim>
+    unit_point(const typename Triangulation<dim>::active_cell_iterator &cell,
+               const Point<dim> &                                       p);
+
+  private:
+    const BoundingBox<dim>                             cavity;
+    std::array<unsigned int, dim>                      n_coarse;
+    std::vector<typename Triangulation<dim>::cell_iterator> coarse_cells;
+  };
+} // namespace vefs
+
+#endif

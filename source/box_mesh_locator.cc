@@ -1,0 +1,86 @@
+#include <vefs/box_mesh_locator.h>
+
+namespace vefs
+{
+  namespace
+  {
+    template <int dim>
+    unsigned int
+    coarse_index(const std::array<unsigned int, dim> &n,
+                 const std::array<unsigned int, dim> &i)
+    {
+      unsigned int index = 0;
+      for (int d = dim - 1; d >= 0; --d)
+        index = index * n[d] + i[d];
+      return index;
+    }
+  } // namespace
+
+  template <int dim>
+  BoxMeshLocator<dim>::BoxMeshLocator(
+    const Triangulation<dim> &       triangulation,
+    const BoundingBox<dim> &         cavity,
+    const std::vector<unsigned int> &subdivisions)
+    : cavity(cavity)
+  {
+    unsigned int n_cells = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        n_coarse[d] = subdivisions[d];
+        n_cells *= subdivisions[d];
+      }
+    coarse_cells.resize(n_cells);
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      {
+        std::array<unsigned int, dim> i;
+        for (unsigned int d = 0; d < dim; ++d)
+          i[d] = static_cast<unsigned int>(
+            (cell->center()[d] - cavity.lower_bound(d)) /
+            cavity.side_length(d) * n_coarse[d]);
+        coarse_cells[coarse_index<dim>(n_coarse, i)] = cell;
+      }
+  }
+
+  template <int dim>
+  typename Triangulation<dim>::active_cell_iterator
+  BoxMeshLocator<dim>::locate(const Point<dim> &p) const
+  {
+    std::array<unsigned int, dim> i;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double x = (p[d] - cavity.lower_bound(d)) / cavity.side_length(d);
+        i[d]           = std::min<unsigned int>(
+          static_cast<unsigned int>(std::max(x, 0.) * n_coarse[d]),
+          n_coarse[d] - 1);
+      }
+    auto cell = coarse_cells[coarse_index<dim>(n_coarse, i)];
+    // Children of a hypercube are numbered lexicographically, x fastest.
+    while (cell->has_children())
+      {
+        const Point<dim> center = cell->center();
+        unsigned int     child  = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          if (p[d] >= center[d])
+            child |= (1u << d);
+        cell = cell->child(child);
+      }
+    return cell;
+  }
+
+  template <int dim>
+  Point<dim>
+  BoxMeshLocator<dim>::unit_point(
+    const typename Triangulation<dim>::active_cell_iterator &cell,
+    const Point<dim> &                                       p)
+  {
+    const Point<dim> lower = cell->vertex(0);
+    const Point<dim> upper = cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
+    Point<dim>       xi;
+    for (unsigned int d = 0; d < dim; ++d)
+      xi[d] = std::min(1., std::max(0., (p[d] - lower[d]) / (upper[d] - lower[d])));
+    return xi;
+  }
+
+  template class BoxMeshLocator<2>;
+  template class BoxMeshLocator<3>;
+} // namespace vefs
