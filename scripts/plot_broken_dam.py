@@ -17,9 +17,14 @@ import argparse
 import os
 import sys
 
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+try:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt  # noqa: E402
+except ImportError as e:
+    sys.exit("plot_broken_dam.py: %s; on Debian: apt-get install "
+             "python3-matplotlib "
+             "python3-numpy (and run the script with /usr/bin/python3)" % e)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import compare_martin_moyce as cmm  # noqa: E402
@@ -85,7 +90,8 @@ def main(argv=None):
     ax_f.plot(t_ref, z_ref, "ko", ms=5, mfc="none",
               label="Martin & Moyce (1952)")
     ax_f.axvspan(cmm.FRONT_T_MIN, cmm.FRONT_T_MAX, color="0.95", zorder=0,
-                 label="fit window")
+                 label="error and fit window, $%g \\leq T \\leq %g$"
+                 % (cmm.FRONT_T_MIN, cmm.FRONT_T_MAX))
     ax_f.set_xlabel(r"$T = t\,\sqrt{2g/a}$")
     ax_f.set_ylabel(r"$Z = z/a$ (surge front)")
     ax_f.set_xlim(0, max(t_ref) * 1.05)
@@ -96,7 +102,9 @@ def main(argv=None):
 
     ax_h.plot(tau_ref, h_ref, "ks", ms=5, mfc="none",
               label="Martin & Moyce (1952)")
-    ax_h.axvline(cmm.HEIGHT_TAU_MAX, color="0.6", lw=0.8, ls=":")
+    ax_h.axvline(cmm.HEIGHT_TAU_MAX, color="0.6", lw=0.8, ls=":",
+                 label="end of error window, $\\tau = %g$"
+                 % cmm.HEIGHT_TAU_MAX)
     ax_h.set_xlabel(r"$\tau = t\,\sqrt{g/a}$")
     ax_h.set_ylabel(r"$H = h/(2a)$ (residual height at the wall)")
     # the experiment goes on to tau = 7.4; show a bit beyond the runs
