@@ -40,9 +40,10 @@ namespace vefs
         , fe_values(fields.mapping,
                     fields.fe,
                     QIterated<dim>(QMidpoint<1>(), n_sub_cells),
-                    update_values | update_quadrature_points |
-                      update_JxW_values)
+                    update_values | update_gradients |
+                      update_quadrature_points | update_JxW_values)
         , psi(fe_values.n_quadrature_points)
+        , grad_psi(fe_values.n_quadrature_points)
       {}
 
       /** Adds the cell's share to @p measure; returns the cell's volume of liquid. */
@@ -76,9 +77,10 @@ namespace vefs
           }
 
         fe_values.reinit(cell);
-        fe_values[FEValuesExtractors::Scalar(
-                    TransportedFields<dim>::level_set_component)]
-          .get_function_values(fields.fields, psi);
+        const FEValuesExtractors::Scalar level_set(
+          TransportedFields<dim>::level_set_component);
+        fe_values[level_set].get_function_values(fields.fields, psi);
+        fe_values[level_set].get_function_gradients(fields.fields, grad_psi);
         double liquid = 0;
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
@@ -86,8 +88,9 @@ namespace vefs
             const double dV = smooth_heaviside(s) * fe_values.JxW(q);
             liquid += dV;
             measure.first_moment += dV * fe_values.quadrature_point(q);
-            measure.volume_derivative -=
-              smooth_delta(s) / width * fe_values.JxW(q);
+            const double delta = smooth_delta(s) / width * fe_values.JxW(q);
+            measure.volume_derivative -= delta;
+            measure.surface_area += delta * grad_psi[q].norm();
           }
         measure.volume += liquid;
         return liquid;
@@ -97,6 +100,7 @@ namespace vefs
       const TransportedFields<dim> &fields;
       FEValues<dim>                 fe_values;
       std::vector<double>           psi;
+      std::vector<Tensor<1, dim>>   grad_psi;
     };
   } // namespace
 
@@ -114,6 +118,7 @@ namespace vefs
       fields.dof_handler.get_triangulation().get_communicator();
     measure.volume            = Utilities::MPI::sum(measure.volume, comm);
     measure.volume_derivative = Utilities::MPI::sum(measure.volume_derivative, comm);
+    measure.surface_area      = Utilities::MPI::sum(measure.surface_area, comm);
     for (unsigned int d = 0; d < dim; ++d)
       measure.first_moment[d] = Utilities::MPI::sum(measure.first_moment[d], comm);
     return measure;
@@ -155,6 +160,67 @@ namespace vefs
         fractions[cell->active_cell_index()] =
           integrator.add(cell, 0, unused) / cell->measure();
     return fractions;
+  }
+
+  template <int dim>
+  double
+  shape_error(const TransportedFields<dim> &fields,
+              const Function<dim> &         exact_level_set)
+  {
+    constexpr unsigned int c = TransportedFields<dim>::level_set_component;
+    const QIterated<dim>   rule(QMidpoint<1>(), 8);
+    FEValues<dim>          fe_values(fields.mapping,
+                            fields.fe,
+                            rule,
+                            update_values | update_quadrature_points |
+                              update_JxW_values);
+    std::vector<double>    psi(rule.size());
+    double                 error = 0;
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          // Both indicators are constant on the cell when psi keeps its sign
+          // at the vertices (Q1) and the exact surface is farther than half
+          // a diameter from the center.
+          const double exact_center = exact_level_set.value(cell->center());
+          bool         uniform =
+            std::abs(exact_center) > 0.51 * cell->diameter();
+          for (const unsigned int v : cell->vertex_indices())
+            uniform = uniform && ((fields.fields(cell->vertex_dof_index(v, c)) <
+                                   0) == (exact_center < 0));
+          if (uniform)
+            continue;
+          fe_values.reinit(cell);
+          fe_values[FEValuesExtractors::Scalar(c)].get_function_values(
+            fields.fields, psi);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            if ((psi[q] < 0) !=
+                (exact_level_set.value(fe_values.quadrature_point(q)) < 0))
+              error += fe_values.JxW(q);
+        }
+    return Utilities::MPI::sum(
+      error, fields.dof_handler.get_triangulation().get_communicator());
+  }
+
+  template <int dim>
+  double
+  interface_thickness(const TransportedFields<dim> &fields,
+                      const Vector<float> &         liquid_fraction,
+                      const double                  finest_cell_size)
+  {
+    double mixed_volume = 0;
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const float f = liquid_fraction[cell->active_cell_index()];
+          if (f > 0.01f && f < 0.99f)
+            mixed_volume += cell->measure();
+        }
+    const auto &triangulation = fields.dof_handler.get_triangulation();
+    mixed_volume =
+      Utilities::MPI::sum(mixed_volume, triangulation.get_communicator());
+    return mixed_volume / measure_liquid(fields).surface_area /
+           finest_cell_size;
   }
 
   template <int dim>
@@ -203,6 +269,11 @@ namespace vefs
                                              const double);                  \
   template double        correct_volume(TransportedFields<dim> &, const double); \
   template Vector<float> liquid_fractions(const TransportedFields<dim> &);   \
+  template double        shape_error(const TransportedFields<dim> &,         \
+                              const Function<dim> &);                      \
+  template double        interface_thickness(const TransportedFields<dim> &, \
+                                      const Vector<float> &,               \
+                                      const double);                       \
   template double        liquid_extent_on_wall(const TransportedFields<dim> &, \
                                         const types::boundary_id,          \
                                         const unsigned int,                \

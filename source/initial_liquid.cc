@@ -115,6 +115,22 @@ namespace vefs
 
   template <int dim>
   std::unique_ptr<Function<dim>>
+  make_prescribed_velocity(const Parameters &parameters)
+  {
+    return parse_function<dim>(parameters.prescribed_velocity, dim);
+  }
+
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  make_exact_final_level_set(const Parameters &parameters)
+  {
+    if (parameters.exact_final_level_set == "initial")
+      return make_initial_level_set<dim>(parameters);
+    return parse_function<dim>(parameters.exact_final_level_set, 1);
+  }
+
+  template <int dim>
+  std::unique_ptr<Function<dim>>
   make_wall_velocity(const Parameters &parameters, const unsigned int wall)
   {
     return parse_function<dim>(parameters.wall_velocity[wall], dim);
@@ -128,6 +144,14 @@ namespace vefs
   make_initial_velocity<2>(const Parameters &);
   template std::unique_ptr<Function<3>>
   make_initial_velocity<3>(const Parameters &);
+  template std::unique_ptr<Function<2>>
+  make_prescribed_velocity<2>(const Parameters &);
+  template std::unique_ptr<Function<3>>
+  make_prescribed_velocity<3>(const Parameters &);
+  template std::unique_ptr<Function<2>>
+  make_exact_final_level_set<2>(const Parameters &);
+  template std::unique_ptr<Function<3>>
+  make_exact_final_level_set<3>(const Parameters &);
   template std::unique_ptr<Function<2>>
   make_wall_velocity<2>(const Parameters &, const unsigned int);
   template std::unique_ptr<Function<3>>

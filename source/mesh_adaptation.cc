@@ -39,12 +39,12 @@ namespace vefs
   bool
   adapt_mesh(parallel::distributed::Triangulation<dim> &triangulation,
              TransportedFields<dim> &                   fields,
-             const MeshLevels &                         levels)
+             const MeshLevels &                         levels,
+             const unsigned int                         max_cycles)
   {
     constexpr unsigned int c       = TransportedFields<dim>::level_set_component;
     bool                   changed = false;
-    // One level per cycle at most: repeat until every cell is at its target.
-    for (unsigned int cycle = 0; cycle < 20; ++cycle)
+    for (unsigned int cycle = 0; cycle < max_cycles; ++cycle)
       {
         for (const auto &cell : fields.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
@@ -101,9 +101,11 @@ namespace vefs
   template bool
   adapt_mesh<2>(parallel::distributed::Triangulation<2> &,
                 TransportedFields<2> &,
-                const MeshLevels &);
+                const MeshLevels &,
+                const unsigned int);
   template bool
   adapt_mesh<3>(parallel::distributed::Triangulation<3> &,
                 TransportedFields<3> &,
-                const MeshLevels &);
+                const MeshLevels &,
+                const unsigned int);
 } // namespace vefs

@@ -293,6 +293,28 @@ namespace vefs
     }
     prm.leave_subsection();
 
+    prm.enter_subsection("Transport");
+    {
+      prm.declare_entry("Prescribed velocity",
+                        "",
+                        Patterns::Anything(),
+                        "If not empty, the velocity is this muParser "
+                        "expression (one per component, separated by ';', "
+                        "in x, y, (z,) t) instead of the solution of the "
+                        "flow equations, which are then not solved: a mode "
+                        "to test the transport of the free surface alone.");
+      prm.declare_entry("Exact final level set",
+                        "",
+                        Patterns::Anything(),
+                        "If not empty, the exact liquid region at the end "
+                        "time, to measure the shape error: 'initial' (the "
+                        "flow brings the liquid back to its initial shape) "
+                        "or a muParser expression in x, y, (z) negative in "
+                        "the liquid. Adds the columns shape_error and "
+                        "interface_thickness to the statistics.");
+    }
+    prm.leave_subsection();
+
     prm.enter_subsection("Output");
     {
       prm.declare_entry("Interval",
@@ -371,6 +393,11 @@ namespace vefs
     solver_tolerance       = prm.get_double("Tolerance");
     solver_max_iterations  = prm.get_integer("Maximum iterations");
     pressure_stabilization = prm.get_double("Pressure stabilization");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Transport");
+    prescribed_velocity   = prm.get("Prescribed velocity");
+    exact_final_level_set = prm.get("Exact final level set");
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
@@ -468,8 +495,14 @@ namespace vefs
             check_expression<3>(wall_velocity[w], 3, "Walls/" + wall_names[w] + " velocity");
         }
 
+    const bool exact_is_expression =
+      !exact_final_level_set.empty() && exact_final_level_set != "initial";
     if (dimension == 2)
       {
+        if (velocity_is_prescribed())
+          check_expression<2>(prescribed_velocity, 2, "Transport/Prescribed velocity");
+        if (exact_is_expression)
+          check_expression<2>(exact_final_level_set, 1, "Transport/Exact final level set");
         check_expression<2>(initial_velocity, 2, "Initial liquid/Velocity");
         if (initial_shape == "expression")
           check_expression<2>(level_set_expression,
@@ -478,6 +511,10 @@ namespace vefs
       }
     else
       {
+        if (velocity_is_prescribed())
+          check_expression<3>(prescribed_velocity, 3, "Transport/Prescribed velocity");
+        if (exact_is_expression)
+          check_expression<3>(exact_final_level_set, 1, "Transport/Exact final level set");
         check_expression<3>(initial_velocity, 3, "Initial liquid/Velocity");
         if (initial_shape == "expression")
           check_expression<3>(level_set_expression,

@@ -13,7 +13,7 @@ namespace vefs
   void
   measure_step(const Parameters &            parameters,
                const TransportedFields<dim> &fields,
-               const StokesStep<dim> &       flow,
+               const Vector<float> &         liquid_fraction,
                const double                  initial_volume,
                StepStatistics<dim> &         s)
   {
@@ -40,7 +40,8 @@ namespace vefs
     double       kinetic = 0, potential = 0, liquid_volume = 0, max_speed = 0;
     unsigned int liquid_cells = 0;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && flow.is_liquid(cell))
+      if (cell->is_locally_owned() &&
+          is_liquid(liquid_fraction[cell->active_cell_index()]))
         {
           ++liquid_cells;
           liquid_volume += cell->measure();
@@ -78,12 +79,13 @@ namespace vefs
                                           vertical,
                                           parameters.cavity_lower[vertical]);
     s.cells = fields.dof_handler.get_triangulation().n_global_active_cells();
-    s.dofs  = flow.n_dofs();
   }
 
   template <int dim>
   StatisticsFile<dim>::StatisticsFile(const std::string &directory,
-                                      const MPI_Comm     comm)
+                                      const MPI_Comm     comm,
+                                      const bool         with_shape_error)
+    : with_shape_error(with_shape_error)
   {
     if (Utilities::MPI::this_mpi_process(comm) != 0)
       return;
@@ -98,7 +100,9 @@ namespace vefs
          << (dim == 3 ? " centroid_z" : "")
          << " kinetic_energy potential_energy elastic_energy max_velocity "
             "floor_extent wall_height cells liquid_cells dofs "
-            "linear_iterations wall_time\n";
+            "linear_iterations wall_time"
+         << (with_shape_error ? " shape_error interface_thickness" : "")
+         << '\n';
   }
 
   template <int dim>
@@ -116,19 +120,23 @@ namespace vefs
          << r.elastic_energy << ' ' << r.max_velocity << ' ' << r.floor_extent
          << ' ' << r.wall_height << ' ' << r.cells << ' ' << r.liquid_cells
          << ' ' << r.dofs << ' ' << r.linear_iterations << ' '
-         << std::setprecision(4) << r.wall_time << std::endl;
+         << std::setprecision(4) << r.wall_time;
+    if (with_shape_error)
+      file << ' ' << std::setprecision(10) << r.shape_error << ' '
+           << r.interface_thickness;
+    file << std::endl;
   }
 
   template void
   measure_step<2>(const Parameters &,
                   const TransportedFields<2> &,
-                  const StokesStep<2> &,
+                  const Vector<float> &,
                   const double,
                   StepStatistics<2> &);
   template void
   measure_step<3>(const Parameters &,
                   const TransportedFields<3> &,
-                  const StokesStep<3> &,
+                  const Vector<float> &,
                   const double,
                   StepStatistics<3> &);
   template class StatisticsFile<2>;

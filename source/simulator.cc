@@ -45,17 +45,21 @@ namespace vefs
             parameters.verbose ? TimerOutput::summary : TimerOutput::never,
             TimerOutput::wall_times)
     , triangulation(comm,
-                    Triangulation<dim>::limit_level_difference_at_vertices,
-                    parallel::distributed::Triangulation<dim>::
-                      mesh_reconstruction_after_repartitioning)
+                    Triangulation<dim>::limit_level_difference_at_vertices)
     , cavity(std::make_pair(to_point<dim>(parameters.cavity_lower),
                             to_point<dim>(parameters.cavity_upper)))
     , levels(parameters)
     , fields(triangulation)
     , flow(parameters, triangulation)
-    , statistics_file(prepared_directory(parameters.output_directory, comm), comm)
+    , statistics_file(prepared_directory(parameters.output_directory, comm),
+                      comm,
+                      !parameters.exact_final_level_set.empty())
     , visualization(parameters.output_directory)
   {
+    if (parameters.velocity_is_prescribed())
+      prescribed_velocity = make_prescribed_velocity<dim>(parameters);
+    if (!parameters.exact_final_level_set.empty())
+      exact_final_level_set = make_exact_final_level_set<dim>(parameters);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::ofstream file(parameters.output_directory + "/parameters.prm");
@@ -91,7 +95,12 @@ namespace vefs
     // Refine toward the initial surface, evaluating it exactly on each mesh.
     do
       fields.interpolate(*level_set, *velocity);
-    while (adapt_mesh(triangulation, fields, levels));
+    while (adapt_mesh(triangulation, fields, levels, 1));
+    if (prescribed_velocity)
+      {
+        prescribed_velocity->set_time(0);
+        fields.set_velocity(*prescribed_velocity);
+      }
     initial_volume = measure_liquid(fields).volume;
     if (!(initial_volume > 0))
       throw InputError("entry 'Initial liquid/Shape': the initial liquid "
@@ -114,9 +123,12 @@ namespace vefs
   void
   Simulator<dim>::run()
   {
-    pcout << "vefs: " << dim << "D Newtonian free-surface flow on "
-          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s), output in "
-          << parameters.output_directory << "/" << std::endl;
+    pcout << "vefs: " << dim << "D "
+          << (prescribed_velocity ? "transport with a prescribed velocity" :
+                                    "Newtonian free-surface flow")
+          << " on " << Utilities::MPI::n_mpi_processes(comm)
+          << " MPI rank(s), output in " << parameters.output_directory << "/"
+          << std::endl;
     {
       TimerOutput::Scope scope(timer, "initial state");
       make_cavity();
@@ -125,49 +137,85 @@ namespace vefs
 
     Vector<float>       liquid_fraction = liquid_fractions(fields);
     StepStatistics<dim> statistics;
-    flow.setup(liquid_fraction, 0);
+    if (!prescribed_velocity)
+      flow.setup(liquid_fraction, 0);
     report(statistics, liquid_fraction);
 
-    typename TransportedFields<dim>::VectorType known;
-    while (statistics.time < parameters.end_time * (1 - 1e-12))
+    while (!is_last_step(statistics))
       {
-        ++statistics.step;
         const double tau = std::min(choose_time_step(statistics.max_velocity),
                                     parameters.end_time - statistics.time);
+        ++statistics.step;
         statistics.tau = tau;
         statistics.cfl = tau * statistics.max_velocity / levels.finest_cell_size;
+
+        // 1. Advection: phi and u along the characteristics.
         {
           TimerOutput::Scope scope(timer, "1 advection");
+          if (prescribed_velocity)
+            {
+              // The velocity at mid-step keeps the trace second order.
+              prescribed_velocity->set_time(statistics.time + tau / 2);
+              fields.set_velocity(*prescribed_velocity);
+            }
           advect_along_characteristics(fields, tau, cavity, *locator);
           if (parameters.volume_correction)
             correct_volume(fields, initial_volume);
         }
+
+        // 2. Mesh: refine around the new free surface, mark liquid cells.
         {
           TimerOutput::Scope scope(timer, "2 mesh adaptation");
-          adapt_mesh(triangulation, fields, levels);
+          adapt_mesh(triangulation, fields, levels, 1);
           liquid_fraction = liquid_fractions(fields);
         }
-        {
-          TimerOutput::Scope scope(timer, "3 diffusion: setup");
-          flow.setup(liquid_fraction, statistics.time + tau);
-        }
-        {
-          TimerOutput::Scope scope(timer, "3 diffusion: assembly");
-          flow.assemble(fields, tau);
-        }
-        {
-          TimerOutput::Scope scope(timer, "3 diffusion: solve");
-          statistics.linear_iterations = flow.solve();
-        }
-        {
-          TimerOutput::Scope scope(timer, "velocity extension");
-          fields.initialize_vector(known);
-          flow.copy_velocity_to(fields, known);
-          extend_velocity(fields, known, parameters.extension_layers);
-        }
+
+        // 3. Diffusion: the Stokes-like step on the liquid cells.
+        if (prescribed_velocity)
+          {
+            prescribed_velocity->set_time(statistics.time + tau);
+            fields.set_velocity(*prescribed_velocity);
+          }
+        else
+          {
+            statistics.linear_iterations =
+              diffusion_step(liquid_fraction, statistics.time + tau, tau);
+          }
+
         statistics.time += tau;
         report(statistics, liquid_fraction);
       }
+  }
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::diffusion_step(const Vector<float> &liquid_fraction,
+                                 const double         new_time,
+                                 const double         tau)
+  {
+    unsigned int iterations;
+    {
+      TimerOutput::Scope scope(timer, "3 diffusion: setup");
+      flow.setup(liquid_fraction, new_time);
+    }
+    {
+      TimerOutput::Scope scope(timer, "3 diffusion: assembly");
+      flow.assemble(fields, tau);
+    }
+    {
+      TimerOutput::Scope scope(timer, "3 diffusion: solve");
+      iterations = flow.solve();
+    }
+    {
+      // The next characteristics trace back through the band around the
+      // liquid: give it the new velocity.
+      TimerOutput::Scope scope(timer, "velocity extension");
+      typename TransportedFields<dim>::VectorType known;
+      fields.initialize_vector(known);
+      flow.copy_velocity_to(fields, known);
+      extend_velocity(fields, known, parameters.extension_layers);
+    }
+    return iterations;
   }
 
   template <int dim>
@@ -177,14 +225,27 @@ namespace vefs
   {
     {
       TimerOutput::Scope scope(timer, "postprocessing");
-      measure_step(parameters, fields, flow, initial_volume, statistics);
+      measure_step(parameters, fields, liquid_fraction, initial_volume, statistics);
+      statistics.dofs = flow.n_dofs();
+      if (exact_final_level_set)
+        {
+          // Only the final shape is known exactly.
+          statistics.shape_error =
+            is_last_step(statistics) ?
+              shape_error(fields, *exact_final_level_set) :
+              std::numeric_limits<double>::quiet_NaN();
+          statistics.interface_thickness =
+            interface_thickness(fields,
+                                liquid_fraction,
+                                levels.finest_cell_size);
+        }
       statistics.wall_time = wall_clock.wall_time();
       statistics_file.write(statistics);
     }
 
-    const bool last = statistics.time >= parameters.end_time * (1 - 1e-12);
     if (parameters.output_interval > 0 &&
-        (statistics.step % parameters.output_interval == 0 || last))
+        (statistics.step % parameters.output_interval == 0 ||
+         is_last_step(statistics)))
       {
         TimerOutput::Scope scope(timer, "output");
         visualization.write(fields, flow, liquid_fraction, statistics.time);

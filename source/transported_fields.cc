@@ -77,6 +77,16 @@ namespace vefs
 
   template <int dim>
   void
+  TransportedFields<dim>::set_velocity(const Function<dim> &velocity)
+  {
+    for (const auto &node : owned_nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        fields(node.dofs[d]) = velocity.value(node.point, d);
+    finalize();
+  }
+
+  template <int dim>
+  void
   TransportedFields<dim>::finalize()
   {
     fields.update_ghost_values();

@@ -64,12 +64,15 @@ namespace vefs
     const LiquidIndicator<dim> phi;
     data_out.add_data_vector(fields.dof_handler, fields.fields, phi);
 
-    std::vector<std::string> flow_names(dim, "velocity");
-    flow_names.push_back("pressure");
-    data_out.add_data_vector(flow.get_dof_handler(),
-                             flow.get_solution(),
-                             flow_names,
-                             interpretation);
+    if (flow.n_dofs() > 0)
+      {
+        std::vector<std::string> flow_names(dim, "velocity");
+        flow_names.push_back("pressure");
+        data_out.add_data_vector(flow.get_dof_handler(),
+                                 flow.get_solution(),
+                                 flow_names,
+                                 interpretation);
+      }
 
     Vector<float> rank(triangulation.n_active_cells());
     rank = Utilities::MPI::this_mpi_process(comm);

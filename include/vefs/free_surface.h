@@ -17,8 +17,10 @@ namespace vefs
   {
     double         volume = 0;
     Tensor<1, dim> first_moment;
-    /** d volume / d shift, for psi -> psi + shift (minus the surface area). */
+    /** d volume / d shift, for psi -> psi + shift. */
     double volume_derivative = 0;
+    /** Area (length in 2D) of the free surface, int delta(psi) |grad psi|. */
+    double surface_area = 0;
   };
 
   /** Liquid volume and its first moment, for the level set psi + shift. */
@@ -48,6 +50,27 @@ namespace vefs
   {
     return fraction >= 0.5f;
   }
+
+  /**
+   * L1 error of the liquid region, int |phi - phi_exact|, with phi_exact the
+   * indicator of @p exact_level_set < 0 (assumed 1-Lipschitz, like a
+   * distance) and both indicators sharp.
+   */
+  template <int dim>
+  double
+  shape_error(const TransportedFields<dim> &fields,
+              const Function<dim> &         exact_level_set);
+
+  /**
+   * Thickness of the free surface as the flow sees it: the volume of the
+   * partly filled cells (0.01 < fraction < 0.99) per unit surface area,
+   * divided by the finest cell size. About one for a sharp surface.
+   */
+  template <int dim>
+  double
+  interface_thickness(const TransportedFields<dim> &fields,
+                      const Vector<float> &         liquid_fraction,
+                      const double                  finest_cell_size);
 
   /** Largest coordinate @p coordinate of the liquid on wall @p boundary_id. */
   template <int dim>

@@ -24,6 +24,16 @@ namespace vefs
   std::unique_ptr<Function<dim>>
   make_initial_velocity(const Parameters &parameters);
 
+  /** The prescribed velocity of the transport-only mode, time dependent. */
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  make_prescribed_velocity(const Parameters &parameters);
+
+  /** The exact liquid region at the end time, as a level set. */
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  make_exact_final_level_set(const Parameters &parameters);
+
   /** Velocity imposed on a 'velocity' wall, dim components, time dependent. */
   template <int dim>
   std::unique_ptr<Function<dim>>

@@ -29,13 +29,16 @@ namespace vefs
 
   /**
    * Refine and coarsen toward the target levels, transferring the fields,
-   * until the mesh stops changing. Returns true if it changed.
+   * at most @p max_cycles times (each changes a cell by one level) or until
+   * the mesh stops changing. Returns true if it changed. In the time loop
+   * one cycle a step suffices: the band is wider than the surface moves.
    */
   template <int dim>
   bool
   adapt_mesh(parallel::distributed::Triangulation<dim> &triangulation,
              TransportedFields<dim> &                   fields,
-             const MeshLevels &                         levels);
+             const MeshLevels &                         levels,
+             const unsigned int                         max_cycles);
 } // namespace vefs
 
 #endif

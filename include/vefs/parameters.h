@@ -104,6 +104,16 @@ namespace vefs
     unsigned int solver_max_iterations;
     double       pressure_stabilization;
 
+    std::string prescribed_velocity;
+    std::string exact_final_level_set;
+
+    /** Transport only: the velocity is given and the flow is not solved. */
+    bool
+    velocity_is_prescribed() const
+    {
+      return !prescribed_velocity.empty();
+    }
+
     unsigned int output_interval;
     bool         verbose;
 

@@ -1,8 +1,9 @@
 #ifndef vefs_postprocessing_h
 #define vefs_postprocessing_h
 
+#include <deal.II/lac/vector.h>
+
 #include <vefs/parameters.h>
-#include <vefs/stokes_step.h>
 #include <vefs/transported_fields.h>
 
 #include <fstream>
@@ -34,6 +35,12 @@ namespace vefs
     unsigned int   dofs             = 0;
     unsigned int   linear_iterations = 0;
     double         wall_time        = 0;
+    /**
+     * Only with an exact final shape: the L1 shape error (at the end time,
+     * NaN before) and the surface thickness.
+     */
+    double shape_error         = 0;
+    double interface_thickness = 0;
   };
 
   /**
@@ -45,7 +52,7 @@ namespace vefs
   void
   measure_step(const Parameters &            parameters,
                const TransportedFields<dim> &fields,
-               const StokesStep<dim> &       flow,
+               const Vector<float> &         liquid_fraction,
                const double                  initial_volume,
                StepStatistics<dim> &         statistics);
 
@@ -54,12 +61,15 @@ namespace vefs
   class StatisticsFile
   {
   public:
-    StatisticsFile(const std::string &directory, const MPI_Comm comm);
+    StatisticsFile(const std::string &directory,
+                   const MPI_Comm     comm,
+                   const bool         with_shape_error);
 
     void
     write(const StepStatistics<dim> &row);
 
   private:
+    const bool    with_shape_error;
     std::ofstream file;
   };
 } // namespace vefs

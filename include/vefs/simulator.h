@@ -42,6 +42,18 @@ namespace vefs
     double
     choose_time_step(const double max_velocity) const;
 
+    /** Steps 3 and 4 of the design: returns the Krylov iterations. */
+    unsigned int
+    diffusion_step(const Vector<float> &liquid_fraction,
+                   const double         new_time,
+                   const double         tau);
+
+    bool
+    is_last_step(const StepStatistics<dim> &statistics) const
+    {
+      return statistics.time >= parameters.end_time * (1 - 1e-12);
+    }
+
     void
     report(StepStatistics<dim> &statistics, const Vector<float> &liquid_fraction);
 
@@ -57,6 +69,8 @@ namespace vefs
     StokesStep<dim>                           flow;
     StatisticsFile<dim>                       statistics_file;
     Visualization<dim>                        visualization;
+    std::unique_ptr<Function<dim>>            prescribed_velocity;
+    std::unique_ptr<Function<dim>>            exact_final_level_set;
     double                                    initial_volume = 0;
     Timer                                     wall_clock;
   };

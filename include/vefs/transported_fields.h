@@ -52,6 +52,10 @@ namespace vefs
     void
     interpolate(const Function<dim> &level_set, const Function<dim> &velocity);
 
+    /** Set the velocity to @p velocity (at its current time) at every node. */
+    void
+    set_velocity(const Function<dim> &velocity);
+
     /** Make hanging nodes and ghost entries consistent after a change. */
     void
     finalize();
