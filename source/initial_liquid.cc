@@ -73,7 +73,7 @@ namespace vefs
       auto function = std::make_unique<FunctionParser<dim>>(n_components);
       function->initialize(dim == 2 ? "x,y,t" : "x,y,z,t",
                            Utilities::split_string_list(expression, ';'),
-                           {},
+                           {{"pi", numbers::PI}},
                            true);
       return function;
     }

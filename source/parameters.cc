@@ -68,7 +68,10 @@ namespace vefs
       try
         {
           FunctionParser<dim> function(n_components);
-          function.initialize(variable_names(dim), parts, {}, true);
+          function.initialize(variable_names(dim),
+                              parts,
+                              {{"pi", numbers::PI}},
+                              true);
           Vector<double> value(n_components);
           function.vector_value(Point<dim>(), value);
         }
@@ -233,7 +236,8 @@ namespace vefs
                         "0; 0",
                         Patterns::Anything(),
                         "Initial velocity (m/s): one muParser expression "
-                        "per component, separated by ';', in x, y, (z).");
+                        "per component, separated by ';', in x, y, (z). All "
+                        "expressions know the constant pi.");
     }
     prm.leave_subsection();
 
@@ -265,6 +269,12 @@ namespace vefs
                         Patterns::Integer(1, 100),
                         "Number of cell layers beyond the liquid into which "
                         "the velocity is extended for the characteristics.");
+      prm.declare_entry("Redistancing interval",
+                        "1",
+                        Patterns::Integer(0),
+                        "Every this many steps, make the level set a signed "
+                        "distance again away from the surface (the surface "
+                        "itself does not move); 0: never.");
       prm.declare_entry("Volume correction",
                         "true",
                         Patterns::Bool(),
@@ -387,6 +397,7 @@ namespace vefs
     band_width        = prm.get_double("Band width");
     extension_layers  = prm.get_integer("Extension layers");
     volume_correction = prm.get_bool("Volume correction");
+    redistancing_interval = prm.get_integer("Redistancing interval");
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");

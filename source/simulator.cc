@@ -3,6 +3,7 @@
 #include <vefs/characteristics.h>
 #include <vefs/free_surface.h>
 #include <vefs/initial_liquid.h>
+#include <vefs/redistancing.h>
 #include <vefs/simulator.h>
 #include <vefs/velocity_extension.h>
 
@@ -159,6 +160,9 @@ namespace vefs
               fields.set_velocity(*prescribed_velocity);
             }
           advect_along_characteristics(fields, tau, cavity, *locator);
+          if (parameters.redistancing_interval > 0 &&
+              statistics.step % parameters.redistancing_interval == 0)
+            redistance(fields);
           if (parameters.volume_correction)
             correct_volume(fields, initial_volume);
         }

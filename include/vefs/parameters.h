@@ -99,6 +99,7 @@ namespace vefs
     double       band_width;
     unsigned int extension_layers;
     bool         volume_correction;
+    unsigned int redistancing_interval;
 
     double       solver_tolerance;
     unsigned int solver_max_iterations;
