@@ -1,0 +1,11 @@
+"""Zalesak's slotted disk after one revolution at CFL 5, finest cells 1/128.
+Exact final shape: the initial disk. Bounds: relative L1 error 0.12 (the
+slot, 6 cells wide, has its corners rounded; 0.084 measured when the test was
+written), interface thickness 2 finest cells (issue 3)."""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from transport_check import check  # noqa: E402
+
+check(sys.argv[1], 0.12, 2.0)
