@@ -18,8 +18,8 @@ namespace vefs
 
   template <int dim>
   BoxMeshLocator<dim>::BoxMeshLocator(
-    const Triangulation<dim> &       triangulation,
-    const BoundingBox<dim> &         cavity,
+    const Triangulation<dim>        &triangulation,
+    const BoundingBox<dim>          &cavity,
     const std::vector<unsigned int> &subdivisions)
     : cavity(cavity)
   {
@@ -49,9 +49,9 @@ namespace vefs
     for (unsigned int d = 0; d < dim; ++d)
       {
         const double x = (p[d] - cavity.lower_bound(d)) / cavity.side_length(d);
-        i[d]           = std::min<unsigned int>(
-          static_cast<unsigned int>(std::max(x, 0.) * n_coarse[d]),
-          n_coarse[d] - 1);
+        i[d]           = std::min<unsigned int>(static_cast<unsigned int>(
+                                        std::max(x, 0.) * n_coarse[d]),
+                                      n_coarse[d] - 1);
       }
     auto cell = coarse_cells[coarse_index<dim>(n_coarse, i)];
     // Children of a hypercube are numbered lexicographically, x fastest.
@@ -71,13 +71,15 @@ namespace vefs
   Point<dim>
   BoxMeshLocator<dim>::unit_point(
     const typename Triangulation<dim>::active_cell_iterator &cell,
-    const Point<dim> &                                       p)
+    const Point<dim>                                        &p)
   {
     const Point<dim> lower = cell->vertex(0);
-    const Point<dim> upper = cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
-    Point<dim>       xi;
+    const Point<dim> upper =
+      cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
+    Point<dim> xi;
     for (unsigned int d = 0; d < dim; ++d)
-      xi[d] = std::min(1., std::max(0., (p[d] - lower[d]) / (upper[d] - lower[d])));
+      xi[d] =
+        std::min(1., std::max(0., (p[d] - lower[d]) / (upper[d] - lower[d])));
     return xi;
   }
 

@@ -1,5 +1,4 @@
 #include <deal.II/base/mpi_remote_point_evaluation.h>
-
 #include <deal.II/numerics/vector_tools_evaluate.h>
 
 #include <vefs/characteristics.h>
@@ -17,7 +16,7 @@ namespace vefs
       for (unsigned int d = 0; d < dim; ++d)
         {
           const double margin = 1e-10 * box.side_length(d);
-          q[d]                = std::min(std::max(p[d], box.lower_bound(d) + margin),
+          q[d] = std::min(std::max(p[d], box.lower_bound(d) + margin),
                           box.upper_bound(d) - margin);
         }
       return q;
@@ -31,8 +30,8 @@ namespace vefs
     template <int dim>
     std::vector<Tensor<1, dim + 1>>
     evaluate_at(const std::vector<Point<dim>> &points,
-                const TransportedFields<dim> & fields,
-                const BoxMeshLocator<dim> &    locator)
+                const TransportedFields<dim>  &fields,
+                const BoxMeshLocator<dim>     &locator)
     {
       std::vector<Tensor<1, dim + 1>> values(points.size());
       std::vector<unsigned int>       remote;
@@ -44,7 +43,8 @@ namespace vefs
               remote.push_back(i);
               continue;
             }
-          const Point<dim> xi = BoxMeshLocator<dim>::unit_point(cell, points[i]);
+          const Point<dim> xi =
+            BoxMeshLocator<dim>::unit_point(cell, points[i]);
           const auto dof_cell = fields.cell_of(cell);
           for (const unsigned int v : cell->vertex_indices())
             {
@@ -69,8 +69,10 @@ namespace vefs
       evaluation.reinit(remote_points, triangulation, fields.mapping);
       AssertThrow(evaluation.all_points_found(),
                   ExcMessage("A characteristic foot lies outside the mesh."));
-      const auto remote_values = VectorTools::point_values<dim + 1>(
-        evaluation, fields.dof_handler, fields.fields);
+      const auto remote_values =
+        VectorTools::point_values<dim + 1>(evaluation,
+                                           fields.dof_handler,
+                                           fields.fields);
       for (unsigned int k = 0; k < remote.size(); ++k)
         values[remote[k]] = remote_values[k];
       return values;
@@ -79,9 +81,9 @@ namespace vefs
 
   template <int dim>
   void
-  advect_along_characteristics(TransportedFields<dim> &fields,
+  advect_along_characteristics(TransportedFields<dim>    &fields,
                                const double               tau,
-                               const BoundingBox<dim> &   cavity,
+                               const BoundingBox<dim>    &cavity,
                                const BoxMeshLocator<dim> &locator)
   {
     const auto &nodes = fields.nodes();

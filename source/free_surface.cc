@@ -1,5 +1,4 @@
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/fe/fe_values.h>
 
 #include <vefs/free_surface.h>
@@ -44,22 +43,25 @@ namespace vefs
                       update_quadrature_points | update_JxW_values)
         , psi(fe_values.n_quadrature_points)
         , grad_psi(fe_values.n_quadrature_points)
-      {}
+      {
+      }
 
-      /** Adds the cell's share to @p measure; returns the cell's volume of liquid. */
+      /** Adds the cell's share to @p measure; returns the cell's volume of
+       * liquid. */
       double
       add(const typename DoFHandler<dim>::active_cell_iterator &cell,
           const double                                          shift,
-          LiquidMeasure<dim> &                                  measure)
+          LiquidMeasure<dim>                                   &measure)
       {
-        const double width = cell->minimum_vertex_distance() / n_sub_cells;
-        double       lowest = std::numeric_limits<double>::max();
+        const double width   = cell->minimum_vertex_distance() / n_sub_cells;
+        double       lowest  = std::numeric_limits<double>::max();
         double       highest = -lowest;
         for (const unsigned int v : cell->vertex_indices())
           {
             const double value =
               fields.fields(cell->vertex_dof_index(
-                v, TransportedFields<dim>::level_set_component)) +
+                v,
+                TransportedFields<dim>::level_set_component)) +
               shift;
             lowest  = std::min(lowest, value);
             highest = std::max(highest, value);
@@ -116,11 +118,13 @@ namespace vefs
 
     const MPI_Comm comm =
       fields.dof_handler.get_triangulation().get_communicator();
-    measure.volume            = Utilities::MPI::sum(measure.volume, comm);
-    measure.volume_derivative = Utilities::MPI::sum(measure.volume_derivative, comm);
-    measure.surface_area      = Utilities::MPI::sum(measure.surface_area, comm);
+    measure.volume = Utilities::MPI::sum(measure.volume, comm);
+    measure.volume_derivative =
+      Utilities::MPI::sum(measure.volume_derivative, comm);
+    measure.surface_area = Utilities::MPI::sum(measure.surface_area, comm);
     for (unsigned int d = 0; d < dim; ++d)
-      measure.first_moment[d] = Utilities::MPI::sum(measure.first_moment[d], comm);
+      measure.first_moment[d] =
+        Utilities::MPI::sum(measure.first_moment[d], comm);
     return measure;
   }
 
@@ -165,7 +169,7 @@ namespace vefs
   template <int dim>
   double
   shape_error(const TransportedFields<dim> &fields,
-              const Function<dim> &         exact_level_set)
+              const Function<dim>          &exact_level_set)
   {
     constexpr unsigned int c = TransportedFields<dim>::level_set_component;
     const QIterated<dim>   rule(QMidpoint<1>(), 8);
@@ -183,29 +187,29 @@ namespace vefs
           // at the vertices (Q1) and the exact surface is farther than half
           // a diameter from the center.
           const double exact_center = exact_level_set.value(cell->center());
-          bool         uniform =
-            std::abs(exact_center) > 0.51 * cell->diameter();
+          bool uniform = std::abs(exact_center) > 0.51 * cell->diameter();
           for (const unsigned int v : cell->vertex_indices())
             uniform = uniform && ((fields.fields(cell->vertex_dof_index(v, c)) <
                                    0) == (exact_center < 0));
           if (uniform)
             continue;
           fe_values.reinit(cell);
-          fe_values[FEValuesExtractors::Scalar(c)].get_function_values(
-            fields.fields, psi);
+          fe_values[FEValuesExtractors::Scalar(c)]
+            .get_function_values(fields.fields, psi);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             if ((psi[q] < 0) !=
                 (exact_level_set.value(fe_values.quadrature_point(q)) < 0))
               error += fe_values.JxW(q);
         }
     return Utilities::MPI::sum(
-      error, fields.dof_handler.get_triangulation().get_communicator());
+      error,
+      fields.dof_handler.get_triangulation().get_communicator());
   }
 
   template <int dim>
   double
   interface_thickness(const TransportedFields<dim> &fields,
-                      const Vector<float> &         liquid_fraction,
+                      const Vector<float>          &liquid_fraction,
                       const double                  finest_cell_size)
   {
     double mixed_volume = 0;
@@ -230,20 +234,20 @@ namespace vefs
                         const unsigned int            coordinate,
                         const double                  value_if_dry)
   {
-    constexpr unsigned int c       = TransportedFields<dim>::level_set_component;
-    double                 extent  = -std::numeric_limits<double>::max();
+    constexpr unsigned int c      = TransportedFields<dim>::level_set_component;
+    double                 extent = -std::numeric_limits<double>::max();
     auto                   visit_edge = [&](const auto &edge) {
       const double     psi_a = fields.fields(edge->vertex_dof_index(0, c));
       const double     psi_b = fields.fields(edge->vertex_dof_index(1, c));
-      const Point<dim> a     = edge->vertex(0);
-      const Point<dim> b     = edge->vertex(1);
+      const Point<dim> a = edge->vertex(0);
+      const Point<dim> b = edge->vertex(1);
       if (psi_a <= 0)
         extent = std::max(extent, a[coordinate]);
       if (psi_b <= 0)
         extent = std::max(extent, b[coordinate]);
       if ((psi_a < 0) != (psi_b < 0))
-        extent = std::max(
-          extent, (a + psi_a / (psi_a - psi_b) * (b - a))[coordinate]);
+        extent =
+          std::max(extent, (a + psi_a / (psi_a - psi_b) * (b - a))[coordinate]);
     };
 
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
@@ -259,25 +263,26 @@ namespace vefs
             }
 
     extent = Utilities::MPI::max(
-      extent, fields.dof_handler.get_triangulation().get_communicator());
-    return extent == -std::numeric_limits<double>::max() ? value_if_dry :
-                                                           extent;
+      extent,
+      fields.dof_handler.get_triangulation().get_communicator());
+    return extent == -std::numeric_limits<double>::max() ? value_if_dry
+                                                         : extent;
   }
 
-#define VEFS_INSTANTIATE(dim)                                              \
-  template LiquidMeasure<dim> measure_liquid(const TransportedFields<dim> &, \
-                                             const double);                  \
+#define VEFS_INSTANTIATE(dim)                                                    \
+  template LiquidMeasure<dim> measure_liquid(const TransportedFields<dim> &,     \
+                                             const double);                      \
   template double        correct_volume(TransportedFields<dim> &, const double); \
-  template Vector<float> liquid_fractions(const TransportedFields<dim> &);   \
-  template double        shape_error(const TransportedFields<dim> &,         \
-                              const Function<dim> &);                      \
-  template double        interface_thickness(const TransportedFields<dim> &, \
-                                      const Vector<float> &,               \
-                                      const double);                       \
-  template double        liquid_extent_on_wall(const TransportedFields<dim> &, \
-                                        const types::boundary_id,          \
-                                        const unsigned int,                \
-                                        const double);
+  template Vector<float> liquid_fractions(const TransportedFields<dim> &);       \
+  template double        shape_error(const TransportedFields<dim> &,             \
+                                     const Function<dim> &);                     \
+  template double        interface_thickness(const TransportedFields<dim> &,     \
+                                             const Vector<float> &,              \
+                                             const double);                      \
+  template double        liquid_extent_on_wall(const TransportedFields<dim> &,   \
+                                               const types::boundary_id,         \
+                                               const unsigned int,               \
+                                               const double);
   VEFS_INSTANTIATE(2)
   VEFS_INSTANTIATE(3)
 #undef VEFS_INSTANTIATE

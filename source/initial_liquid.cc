@@ -7,16 +7,6 @@ namespace vefs
 {
   namespace
   {
-    template <int dim>
-    Point<dim>
-    to_point(const std::vector<double> &coordinates)
-    {
-      Point<dim> p;
-      for (unsigned int d = 0; d < dim; ++d)
-        p[d] = coordinates[d];
-      return p;
-    }
-
     /** Exact signed distance to the surface of an axis-aligned box. */
     template <int dim>
     class BoxDistance : public Function<dim>
@@ -25,7 +15,8 @@ namespace vefs
       BoxDistance(const Point<dim> &lower, const Point<dim> &upper)
         : lower(lower)
         , upper(upper)
-      {}
+      {
+      }
 
       double
       value(const Point<dim> &p, const unsigned int = 0) const override
@@ -52,7 +43,8 @@ namespace vefs
       BallDistance(const Point<dim> &center, const double radius)
         : center(center)
         , radius(radius)
-      {}
+      {
+      }
 
       double
       value(const Point<dim> &p, const unsigned int = 0) const override
@@ -101,8 +93,9 @@ namespace vefs
         return std::make_unique<BoxDistance<dim>>(lower, upper);
       }
     if (parameters.initial_shape == "ball")
-      return std::make_unique<BallDistance<dim>>(
-        to_point<dim>(parameters.ball_center), parameters.ball_radius);
+      return std::make_unique<BallDistance<dim>>(to_point<dim>(
+                                                   parameters.ball_center),
+                                                 parameters.ball_radius);
     return parse_function<dim>(parameters.level_set_expression, 1);
   }
 

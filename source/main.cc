@@ -71,12 +71,14 @@ main(int argc, char *argv[])
       if (!argument.empty() && argument[0] == '-')
         return fail("unknown option '" + argument + "'\n" + usage);
       if (!file.empty())
-        return fail("more than one parameter file given\n" + std::string(usage));
+        return fail("more than one parameter file given\n" +
+                    std::string(usage));
       file = argument;
     }
 
-  const std::string where = file.empty() ? "default parameters" : "'" + file + "'";
-  Parameters        parameters;
+  const std::string where =
+    file.empty() ? "default parameters" : "'" + file + "'";
+  Parameters parameters;
   try
     {
       if (!file.empty())

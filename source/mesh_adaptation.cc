@@ -27,9 +27,9 @@ namespace vefs
                            const double psi_highest) const
   {
     const double distance =
-      (psi_lowest <= 0 && psi_highest >= 0) ?
-        0 :
-        std::min(std::abs(psi_lowest), std::abs(psi_highest));
+      (psi_lowest <= 0 && psi_highest >= 0)
+        ? 0
+        : std::min(std::abs(psi_lowest), std::abs(psi_highest));
     if (distance <= band_half_width)
       return max_level;
     return psi_highest < 0 ? bulk_level : min_level;
@@ -38,11 +38,11 @@ namespace vefs
   template <int dim>
   bool
   adapt_mesh(parallel::distributed::Triangulation<dim> &triangulation,
-             TransportedFields<dim> &                   fields,
-             const MeshLevels &                         levels,
+             TransportedFields<dim>                    &fields,
+             const MeshLevels                          &levels,
              const unsigned int                         max_cycles)
   {
-    constexpr unsigned int c       = TransportedFields<dim>::level_set_component;
+    constexpr unsigned int c = TransportedFields<dim>::level_set_component;
     bool                   changed = false;
     for (unsigned int cycle = 0; cycle < max_cycles; ++cycle)
       {
@@ -53,19 +53,20 @@ namespace vefs
               double highest = -lowest;
               for (const unsigned int v : cell->vertex_indices())
                 {
-                  const double psi = fields.fields(cell->vertex_dof_index(v, c));
-                  lowest           = std::min(lowest, psi);
-                  highest          = std::max(highest, psi);
+                  const double psi =
+                    fields.fields(cell->vertex_dof_index(v, c));
+                  lowest  = std::min(lowest, psi);
+                  highest = std::max(highest, psi);
                 }
               const unsigned int target = levels.target_level(lowest, highest);
               const unsigned int level  = cell->level();
               if (level < target)
                 {
-                cell->set_refine_flag();
+                  cell->set_refine_flag();
                 }
               else if (level > target)
                 {
-                cell->set_coarsen_flag();
+                  cell->set_coarsen_flag();
                 }
             }
         // Mesh smoothing and the 2:1 balance may veto flags: stop when none

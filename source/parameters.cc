@@ -1,6 +1,5 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/lac/vector.h>
 
 #include <vefs/parameters.h>
@@ -29,7 +28,9 @@ namespace vefs
     }
 
     void
-    require(const bool condition, const std::string &entry, const std::string &what)
+    require(const bool         condition,
+            const std::string &entry,
+            const std::string &what)
     {
       if (!condition)
         throw InputError(entry_error(entry, what));
@@ -83,11 +84,37 @@ namespace vefs
       std::cerr.rdbuf(err_buffer);
       if (!valid)
         throw InputError(
-            entry_error(entry,
-                        "'" + expression +
-                          "' is not a valid muParser expression in the "
-                          "variables " +
-                          variable_names(dim)));
+          entry_error(entry,
+                      "'" + expression +
+                        "' is not a valid muParser expression in the "
+                        "variables " +
+                        variable_names(dim)));
+    }
+
+    /** Every muParser expression the scene uses, with its entry name. */
+    template <int dim>
+    void
+    check_expressions(const Parameters &p)
+    {
+      for (unsigned int w = 0; w < 2 * dim; ++w)
+        if (p.wall_type[w] == WallType::velocity)
+          check_expression<dim>(p.wall_velocity[w],
+                                dim,
+                                "Walls/" + wall_names[w] + " velocity");
+      check_expression<dim>(p.initial_velocity, dim, "Initial liquid/Velocity");
+      if (p.initial_shape == "expression")
+        check_expression<dim>(p.level_set_expression,
+                              1,
+                              "Initial liquid/Level set expression");
+      if (p.velocity_is_prescribed())
+        check_expression<dim>(p.prescribed_velocity,
+                              dim,
+                              "Transport/Prescribed velocity");
+      if (!p.exact_final_level_set.empty() &&
+          p.exact_final_level_set != "initial")
+        check_expression<dim>(p.exact_final_level_set,
+                              1,
+                              "Transport/Exact final level set");
     }
   } // namespace
 
@@ -158,8 +185,8 @@ namespace vefs
             wall_names[w],
             defaults[w],
             Patterns::Selection("no-slip|slip|open|velocity"),
-            "Condition on the cavity wall " + wall_names[w] +
-              " (boundary id " + std::to_string(w) +
+            "Condition on the cavity wall " + wall_names[w] + " (boundary id " +
+              std::to_string(w) +
               "): no-slip (u = 0), slip (u.n = 0, no tangential "
               "stress), open (zero traction) or velocity (u given by the "
               "entry '" +
@@ -209,11 +236,12 @@ namespace vefs
                         Patterns::Selection("box|ball|expression"),
                         "Shape of the liquid at t = 0: a box, a ball, or "
                         "the region where 'Level set expression' < 0.");
-      prm.declare_entry("Box lower corner",
-                        "0, 0",
-                        Patterns::List(Patterns::Double(), 2, 3),
-                        "Lower corner of the liquid box (m). A box face on a cavity wall "
-                        "wets that wall (it is not a free surface).");
+      prm.declare_entry(
+        "Box lower corner",
+        "0, 0",
+        Patterns::List(Patterns::Double(), 2, 3),
+        "Lower corner of the liquid box (m). A box face on a cavity wall "
+        "wets that wall (it is not a free surface).");
       prm.declare_entry("Box upper corner",
                         "0.05715, 0.1143",
                         Patterns::List(Patterns::Double(), 2, 3),
@@ -391,12 +419,12 @@ namespace vefs
     prm.leave_subsection();
 
     prm.enter_subsection("Mesh refinement");
-    min_level         = prm.get_integer("Minimum level");
-    bulk_level        = prm.get_integer("Bulk level");
-    max_level         = prm.get_integer("Maximum level");
-    band_width        = prm.get_double("Band width");
-    extension_layers  = prm.get_integer("Extension layers");
-    volume_correction = prm.get_bool("Volume correction");
+    min_level             = prm.get_integer("Minimum level");
+    bulk_level            = prm.get_integer("Bulk level");
+    max_level             = prm.get_integer("Maximum level");
+    band_width            = prm.get_double("Band width");
+    extension_layers      = prm.get_integer("Extension layers");
+    volume_correction     = prm.get_bool("Volume correction");
     redistancing_interval = prm.get_integer("Redistancing interval");
     prm.leave_subsection();
 
@@ -430,9 +458,9 @@ namespace vefs
   void
   Parameters::check() const
   {
-    const std::string dim_text = std::to_string(dimension);
+    const std::string dim_text      = std::to_string(dimension);
     auto              require_point = [&](const std::vector<double> &p,
-                             const std::string &         entry) {
+                             const std::string         &entry) {
       require(p.size() == dimension,
               entry,
               "needs " + dim_text + " comma-separated numbers (Dimension = " +
@@ -497,40 +525,9 @@ namespace vefs
             "levels must satisfy Minimum level <= Bulk level <= Maximum "
             "level");
 
-    for (unsigned int w = 0; w < 2 * dimension; ++w)
-      if (wall_type[w] == WallType::velocity)
-        {
-          if (dimension == 2)
-            check_expression<2>(wall_velocity[w], 2, "Walls/" + wall_names[w] + " velocity");
-          else
-            check_expression<3>(wall_velocity[w], 3, "Walls/" + wall_names[w] + " velocity");
-        }
-
-    const bool exact_is_expression =
-      !exact_final_level_set.empty() && exact_final_level_set != "initial";
     if (dimension == 2)
-      {
-        if (velocity_is_prescribed())
-          check_expression<2>(prescribed_velocity, 2, "Transport/Prescribed velocity");
-        if (exact_is_expression)
-          check_expression<2>(exact_final_level_set, 1, "Transport/Exact final level set");
-        check_expression<2>(initial_velocity, 2, "Initial liquid/Velocity");
-        if (initial_shape == "expression")
-          check_expression<2>(level_set_expression,
-                              1,
-                              "Initial liquid/Level set expression");
-      }
+      check_expressions<2>(*this);
     else
-      {
-        if (velocity_is_prescribed())
-          check_expression<3>(prescribed_velocity, 3, "Transport/Prescribed velocity");
-        if (exact_is_expression)
-          check_expression<3>(exact_final_level_set, 1, "Transport/Exact final level set");
-        check_expression<3>(initial_velocity, 3, "Initial liquid/Velocity");
-        if (initial_shape == "expression")
-          check_expression<3>(level_set_expression,
-                              1,
-                              "Initial liquid/Level set expression");
-      }
+      check_expressions<3>(*this);
   }
 } // namespace vefs

@@ -1,5 +1,4 @@
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/fe/fe_values.h>
 
 #include <vefs/free_surface.h>
@@ -11,11 +10,11 @@ namespace vefs
 {
   template <int dim>
   void
-  measure_step(const Parameters &            parameters,
+  measure_step(const Parameters             &parameters,
                const TransportedFields<dim> &fields,
-               const Vector<float> &         liquid_fraction,
+               const Vector<float>          &liquid_fraction,
                const double                  initial_volume,
-               StepStatistics<dim> &         s)
+               StepStatistics<dim>          &s)
   {
     const MPI_Comm comm =
       fields.dof_handler.get_triangulation().get_communicator();
@@ -70,11 +69,11 @@ namespace vefs
     s.max_velocity       = Utilities::MPI::max(max_speed, comm);
 
     const unsigned int vertical = dim - 1;
-    s.floor_extent = liquid_extent_on_wall(fields,
+    s.floor_extent              = liquid_extent_on_wall(fields,
                                            2 * vertical,
                                            0,
                                            parameters.cavity_lower[0]);
-    s.wall_height  = liquid_extent_on_wall(fields,
+    s.wall_height               = liquid_extent_on_wall(fields,
                                           0,
                                           vertical,
                                           parameters.cavity_lower[vertical]);

@@ -1,5 +1,4 @@
 #include <deal.II/base/mpi.h>
-
 #include <deal.II/numerics/rtree.h>
 
 #include <vefs/redistancing.h>
@@ -20,9 +19,9 @@ namespace vefs
     template <int dim>
     void
     add_crossings(
-      const typename DoFHandler<dim>::active_cell_iterator &          cell,
+      const typename DoFHandler<dim>::active_cell_iterator           &cell,
       const std::array<double, GeometryInfo<dim>::vertices_per_cell> &values,
-      std::vector<Point<dim>> &                                       crossings)
+      std::vector<Point<dim>>                                        &crossings)
     {
       const Point<dim> lower = cell->vertex(0);
       const Point<dim> upper =
@@ -39,7 +38,7 @@ namespace vefs
         return value;
       };
 
-      const unsigned int n = n_sub_cells + 1;
+      const unsigned int n        = n_sub_cells + 1;
       unsigned int       n_points = 1;
       for (unsigned int d = 0; d < dim; ++d)
         n_points *= n;
@@ -73,8 +72,8 @@ namespace vefs
   void
   redistance(TransportedFields<dim> &fields)
   {
-    constexpr unsigned int c = TransportedFields<dim>::level_set_component;
-    const auto &           psi = fields.fields;
+    constexpr unsigned int c   = TransportedFields<dim>::level_set_component;
+    const auto            &psi = fields.fields;
 
     std::vector<Point<dim>> crossings;
     std::vector<bool>       keep(fields.owned_dofs.n_elements(), false);

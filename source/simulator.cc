@@ -14,16 +14,6 @@ namespace vefs
 {
   namespace
   {
-    template <int dim>
-    Point<dim>
-    to_point(const std::vector<double> &coordinates)
-    {
-      Point<dim> p;
-      for (unsigned int d = 0; d < dim; ++d)
-        p[d] = coordinates[d];
-      return p;
-    }
-
     /** The output directory exists before any rank writes into it. */
     const std::string &
     prepared_directory(const std::string &directory, const MPI_Comm comm)
@@ -36,7 +26,8 @@ namespace vefs
   } // namespace
 
   template <int dim>
-  Simulator<dim>::Simulator(const Parameters &parameters, const ParameterHandler &prm)
+  Simulator<dim>::Simulator(const Parameters       &parameters,
+                            const ParameterHandler &prm)
     : parameters(parameters)
     , comm(MPI_COMM_WORLD)
     , pcout(std::cout,
@@ -72,14 +63,16 @@ namespace vefs
   void
   Simulator<dim>::make_cavity()
   {
-    std::vector<unsigned int> subdivisions(parameters.coarse_subdivisions.begin(),
-                                           parameters.coarse_subdivisions.end());
+    std::vector<unsigned int> subdivisions(
+      parameters.coarse_subdivisions.begin(),
+      parameters.coarse_subdivisions.end());
     // colorize: boundary ids 0..2dim-1 for the walls x-, x+, y-, y+, z-, z+.
-    GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                              subdivisions,
-                                              cavity.get_boundary_points().first,
-                                              cavity.get_boundary_points().second,
-                                              true);
+    GridGenerator::subdivided_hyper_rectangle(
+      triangulation,
+      subdivisions,
+      cavity.get_boundary_points().first,
+      cavity.get_boundary_points().second,
+      true);
     locator = std::make_unique<BoxMeshLocator<dim>>(triangulation,
                                                     cavity,
                                                     subdivisions);
@@ -125,8 +118,8 @@ namespace vefs
   Simulator<dim>::run()
   {
     pcout << "vefs: " << dim << "D "
-          << (prescribed_velocity ? "transport with a prescribed velocity" :
-                                    "Newtonian free-surface flow")
+          << (prescribed_velocity ? "transport with a prescribed velocity"
+                                  : "Newtonian free-surface flow")
           << " on " << Utilities::MPI::n_mpi_processes(comm)
           << " MPI rank(s), output in " << parameters.output_directory << "/"
           << std::endl;
@@ -148,7 +141,8 @@ namespace vefs
                                     parameters.end_time - statistics.time);
         ++statistics.step;
         statistics.tau = tau;
-        statistics.cfl = tau * statistics.max_velocity / levels.finest_cell_size;
+        statistics.cfl =
+          tau * statistics.max_velocity / levels.finest_cell_size;
 
         // 1. Advection: phi and u along the characteristics.
         {
@@ -229,15 +223,19 @@ namespace vefs
   {
     {
       TimerOutput::Scope scope(timer, "postprocessing");
-      measure_step(parameters, fields, liquid_fraction, initial_volume, statistics);
+      measure_step(parameters,
+                   fields,
+                   liquid_fraction,
+                   initial_volume,
+                   statistics);
       statistics.dofs = flow.n_dofs();
       if (exact_final_level_set)
         {
           // Only the final shape is known exactly.
           statistics.shape_error =
-            is_last_step(statistics) ?
-              shape_error(fields, *exact_final_level_set) :
-              std::numeric_limits<double>::quiet_NaN();
+            is_last_step(statistics)
+              ? shape_error(fields, *exact_final_level_set)
+              : std::numeric_limits<double>::quiet_NaN();
           statistics.interface_thickness =
             interface_thickness(fields,
                                 liquid_fraction,

@@ -1,21 +1,16 @@
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/hp/fe_values.h>
-
+#include <deal.II/lac/block_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
-#include <deal.II/lac/block_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
-
 #include <deal.II/numerics/vector_tools_boundary.h>
 
 #include <vefs/free_surface.h>
@@ -34,7 +29,8 @@ namespace vefs
       explicit FlowBoundaryValues(const Function<dim> &velocity)
         : Function<dim>(dim + 1)
         , velocity(velocity)
-      {}
+      {
+      }
 
       double
       value(const Point<dim> &p, const unsigned int component) const override
@@ -56,20 +52,22 @@ namespace vefs
     class BlockPreconditioner
     {
     public:
-      BlockPreconditioner(const TrilinosWrappers::BlockSparseMatrix &system,
-                          const TrilinosWrappers::PreconditionAMG &  velocity_amg,
-                          const TrilinosWrappers::PreconditionAMG &  laplace_amg,
-                          const TrilinosWrappers::MPI::Vector &      scaled_inverse_mass)
+      BlockPreconditioner(
+        const TrilinosWrappers::BlockSparseMatrix &system,
+        const TrilinosWrappers::PreconditionAMG   &velocity_amg,
+        const TrilinosWrappers::PreconditionAMG   &laplace_amg,
+        const TrilinosWrappers::MPI::Vector       &scaled_inverse_mass)
         : system(system)
         , velocity_amg(velocity_amg)
         , laplace_amg(laplace_amg)
         , scaled_inverse_mass(scaled_inverse_mass)
         , tmp(system.block(0, 0).locally_owned_range_indices(),
               scaled_inverse_mass.get_mpi_communicator())
-      {}
+      {
+      }
 
       void
-      vmult(TrilinosWrappers::MPI::BlockVector &      dst,
+      vmult(TrilinosWrappers::MPI::BlockVector       &dst,
             const TrilinosWrappers::MPI::BlockVector &src) const
       {
         // x_p = -S^-1 r_p
@@ -86,16 +84,16 @@ namespace vefs
 
     private:
       const TrilinosWrappers::BlockSparseMatrix &system;
-      const TrilinosWrappers::PreconditionAMG &  velocity_amg;
-      const TrilinosWrappers::PreconditionAMG &  laplace_amg;
-      const TrilinosWrappers::MPI::Vector &      scaled_inverse_mass;
+      const TrilinosWrappers::PreconditionAMG   &velocity_amg;
+      const TrilinosWrappers::PreconditionAMG   &laplace_amg;
+      const TrilinosWrappers::MPI::Vector       &scaled_inverse_mass;
       mutable TrilinosWrappers::MPI::Vector      tmp;
     };
   } // namespace
 
   template <int dim>
   StokesStep<dim>::StokesStep(
-    const Parameters &                               parameters,
+    const Parameters                                &parameters,
     const parallel::distributed::Triangulation<dim> &triangulation)
     : parameters(parameters)
     , comm(triangulation.get_communicator())
@@ -151,9 +149,9 @@ namespace vefs
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         cell->set_active_fe_index(
-          vefs::is_liquid(liquid_fraction[cell->active_cell_index()]) ?
-            liquid_index :
-                                                                  empty_index);
+          vefs::is_liquid(liquid_fraction[cell->active_cell_index()])
+            ? liquid_index
+            : empty_index);
     dof_handler.distribute_dofs(fe_collection);
 
     std::vector<unsigned int> block_component(dim + 1, 0);
@@ -167,7 +165,8 @@ namespace vefs
     const IndexSet owned = dof_handler.locally_owned_dofs();
     IndexSet       relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-    owned_partitioning    = {owned.get_view(0, n_u), owned.get_view(n_u, n_u + n_p)};
+    owned_partitioning    = {owned.get_view(0, n_u),
+                             owned.get_view(n_u, n_u + n_p)};
     relevant_partitioning = {relevant.get_view(0, n_u),
                              relevant.get_view(n_u, n_u + n_p)};
 
@@ -272,10 +271,10 @@ namespace vefs
   StokesStep<dim>::assemble(const TransportedFields<dim> &fields,
                             const double                  tau)
   {
-    system_matrix         = 0;
-    schur_matrix          = 0;
-    system_rhs            = 0;
-    lumped_pressure_mass  = 0;
+    system_matrix        = 0;
+    schur_matrix         = 0;
+    system_rhs           = 0;
+    lumped_pressure_mass = 0;
 
     const double   rho = parameters.density;
     const double   mu  = viscosity;
@@ -285,7 +284,8 @@ namespace vefs
     const double cavity_diameter = [&]() {
       double s = 0;
       for (unsigned int d = 0; d < dim; ++d)
-        s += std::pow(parameters.cavity_upper[d] - parameters.cavity_lower[d], 2);
+        s +=
+          std::pow(parameters.cavity_upper[d] - parameters.cavity_lower[d], 2);
       return std::sqrt(s);
     }();
 
@@ -296,15 +296,19 @@ namespace vefs
                                    q_collection,
                                    update_values | update_gradients |
                                      update_JxW_values);
-    FEValues<dim>         advected(fields.mapping, fields.fe, quadrature, update_values);
+    FEValues<dim>         advected(fields.mapping,
+                           fields.fe,
+                           quadrature,
+                           update_values);
     FEFaceValues<dim>     face_values(fe_collection[liquid_index],
                                   face_quadrature,
                                   update_values | update_JxW_values);
 
     const FEValuesExtractors::Vector velocity(0);
     const FEValuesExtractors::Scalar pressure(dim);
-    const unsigned int dofs_per_cell = fe_collection[liquid_index].n_dofs_per_cell();
-    const unsigned int n_q           = quadrature.size();
+    const unsigned int               dofs_per_cell =
+      fe_collection[liquid_index].n_dofs_per_cell();
+    const unsigned int n_q = quadrature.size();
 
     FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
     FullMatrix<double> cell_schur(dofs_per_cell, dofs_per_cell);
@@ -326,9 +330,9 @@ namespace vefs
           advected.reinit(fields.cell_of(cell));
           advected[velocity].get_function_values(fields.fields, u_star);
 
-          const double h     = cell->minimum_vertex_distance();
-          const double tau_K = parameters.pressure_stabilization /
-                               (rho / tau + 4 * mu / (h * h));
+          const double h = cell->minimum_vertex_distance();
+          const double tau_K =
+            parameters.pressure_stabilization / (rho / tau + 4 * mu / (h * h));
           const double weight = tau / rho + tau_K;
 
           cell_matrix = 0;
@@ -345,8 +349,9 @@ namespace vefs
                   phi_p[k]  = fe_values[pressure].value(k, q);
                   grad_p[k] = fe_values[pressure].gradient(k, q);
                 }
-              const double         JxW     = fe_values.JxW(q);
-              const Tensor<1, dim> forcing = rho / tau * u_star[q] + rho * gravity;
+              const double         JxW = fe_values.JxW(q);
+              const Tensor<1, dim> forcing =
+                rho / tau * u_star[q] + rho * gravity;
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
                   for (unsigned int j = 0; j < dofs_per_cell; ++j)
@@ -355,7 +360,8 @@ namespace vefs
                         (rho / tau * phi_u[i] * phi_u[j] +
                          2 * mu * eps_u[i] * eps_u[j] - div_u[i] * phi_p[j] -
                          phi_p[i] * div_u[j] -
-                         tau_K * (rho / tau * phi_u[j] + grad_p[j]) * grad_p[i]) *
+                         tau_K * (rho / tau * phi_u[j] + grad_p[j]) *
+                           grad_p[i]) *
                         JxW;
                       cell_schur(i, j) +=
                         (weight * grad_p[i] * grad_p[j] +
@@ -375,7 +381,8 @@ namespace vefs
             if (is_free_surface(cell, f))
               {
                 face_values.reinit(cell, f);
-                for (const unsigned int q : face_values.quadrature_point_indices())
+                for (const unsigned int q :
+                     face_values.quadrature_point_indices())
                   for (unsigned int i = 0; i < dofs_per_cell; ++i)
                     for (unsigned int j = 0; j < dofs_per_cell; ++j)
                       cell_schur(i, j) +=
@@ -384,9 +391,14 @@ namespace vefs
               }
 
           cell->get_dof_indices(dof_indices);
-          constraints.distribute_local_to_global(
-            cell_matrix, cell_rhs, dof_indices, system_matrix, system_rhs);
-          constraints.distribute_local_to_global(cell_schur, dof_indices, schur_matrix);
+          constraints.distribute_local_to_global(cell_matrix,
+                                                 cell_rhs,
+                                                 dof_indices,
+                                                 system_matrix,
+                                                 system_rhs);
+          constraints.distribute_local_to_global(cell_schur,
+                                                 dof_indices,
+                                                 schur_matrix);
           constraints.distribute_local_to_global(cell_mass,
                                                  dof_indices,
                                                  lumped_pressure_mass);
@@ -438,10 +450,11 @@ namespace vefs
     laplace_data.elliptic = true;
     laplace_amg.initialize(schur_matrix.block(1, 1), laplace_data);
 
-    TrilinosWrappers::MPI::Vector scaled_inverse_mass(lumped_pressure_mass.block(1));
+    TrilinosWrappers::MPI::Vector scaled_inverse_mass(
+      lumped_pressure_mass.block(1));
     for (const auto i : scaled_inverse_mass.locally_owned_elements())
       {
-        const double m = lumped_pressure_mass.block(1)(i);
+        const double m         = lumped_pressure_mass.block(1)(i);
         scaled_inverse_mass(i) = m > 0 ? 1. / m : 0.;
       }
     scaled_inverse_mass.compress(VectorOperation::insert);
@@ -453,11 +466,13 @@ namespace vefs
 
     BlockVector distributed(owned_partitioning, comm);
     constraints.set_zero(distributed);
-    const double  rhs_norm = system_rhs.l2_norm();
-    SolverControl control(parameters.solver_max_iterations,
-                          std::max(parameters.solver_tolerance * rhs_norm, 1e-300));
+    const double              rhs_norm = system_rhs.l2_norm();
+    SolverControl             control(parameters.solver_max_iterations,
+                          std::max(parameters.solver_tolerance * rhs_norm,
+                                   1e-300));
     SolverFGMRES<BlockVector> solver(control,
-                                     SolverFGMRES<BlockVector>::AdditionalData(100));
+                                     SolverFGMRES<BlockVector>::AdditionalData(
+                                       100));
     try
       {
         if (rhs_norm > 0)
@@ -482,7 +497,7 @@ namespace vefs
   template <int dim>
   void
   StokesStep<dim>::copy_velocity_to(
-    TransportedFields<dim> &                    fields,
+    TransportedFields<dim>                      &fields,
     typename TransportedFields<dim>::VectorType &known) const
   {
     known = 0;

@@ -1,5 +1,4 @@
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_q.h>
 
 #include <vefs/transported_fields.h>
@@ -11,7 +10,8 @@ namespace vefs
     const parallel::distributed::Triangulation<dim> &triangulation)
     : fe(FE_Q<dim>(1), n_components)
     , dof_handler(triangulation)
-  {}
+  {
+  }
 
   template <int dim>
   void

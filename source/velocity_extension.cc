@@ -4,9 +4,9 @@ namespace vefs
 {
   template <int dim>
   void
-  extend_velocity(TransportedFields<dim> &                    fields,
+  extend_velocity(TransportedFields<dim>                      &fields,
                   typename TransportedFields<dim>::VectorType &known,
-                  const unsigned int                          n_layers)
+                  const unsigned int                           n_layers)
   {
     using VectorType = typename TransportedFields<dim>::VectorType;
 

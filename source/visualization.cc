@@ -16,7 +16,8 @@ namespace vefs
     public:
       LiquidIndicator()
         : DataPostprocessorScalar<dim>("phi", update_values)
-      {}
+      {
+      }
 
       void
       evaluate_vector_field(
@@ -25,9 +26,10 @@ namespace vefs
       {
         for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
           computed_quantities[q](0) =
-            inputs.solution_values[q][TransportedFields<dim>::level_set_component] < 0 ?
-              1. :
-              0.;
+            inputs.solution_values
+                  [q][TransportedFields<dim>::level_set_component] < 0
+              ? 1.
+              : 0.;
       }
     };
   } // namespace
@@ -35,17 +37,18 @@ namespace vefs
   template <int dim>
   Visualization<dim>::Visualization(const std::string &directory)
     : directory(directory)
-  {}
+  {
+  }
 
   template <int dim>
   void
   Visualization<dim>::write(const TransportedFields<dim> &fields,
-                            const StokesStep<dim> &       flow,
-                            const Vector<float> &         liquid_fraction,
+                            const StokesStep<dim>        &flow,
+                            const Vector<float>          &liquid_fraction,
                             const double                  time)
   {
-    const auto &triangulation = fields.dof_handler.get_triangulation();
-    const MPI_Comm comm       = triangulation.get_communicator();
+    const auto    &triangulation = fields.dof_handler.get_triangulation();
+    const MPI_Comm comm          = triangulation.get_communicator();
 
     DataOut<dim> data_out;
     data_out.attach_triangulation(triangulation);
@@ -82,7 +85,11 @@ namespace vefs
 
     const unsigned int counter = series.size();
     const std::string  name =
-      data_out.write_vtu_with_pvtu_record(directory + "/", "solution", counter, comm, 5);
+      data_out.write_vtu_with_pvtu_record(directory + "/",
+                                          "solution",
+                                          counter,
+                                          comm,
+                                          5);
     series.emplace_back(time, name);
 
     if (Utilities::MPI::this_mpi_process(comm) == 0)

@@ -2,7 +2,6 @@
 #define vefs_box_mesh_locator_h
 
 #include <deal.II/base/bounding_box.h>
-
 #include <deal.II/grid/tria.h>
 
 #include <vector>
@@ -23,8 +22,8 @@ namespace vefs
   class BoxMeshLocator
   {
   public:
-    BoxMeshLocator(const Triangulation<dim> &      triangulation,
-                   const BoundingBox<dim> &        cavity,
+    BoxMeshLocator(const Triangulation<dim>        &triangulation,
+                   const BoundingBox<dim>          &cavity,
                    const std::vector<unsigned int> &subdivisions);
 
     /** The active cell containing @p p; it may be artificial on this rank. */
@@ -34,11 +33,11 @@ namespace vefs
     /** Coordinates of @p p in the unit cell of the axis-aligned @p cell. */
     static Point<dim>
     unit_point(const typename Triangulation<dim>::active_cell_iterator &cell,
-               const Point<dim> &                                       p);
+               const Point<dim>                                        &p);
 
   private:
-    const BoundingBox<dim>                             cavity;
-    std::array<unsigned int, dim>                      n_coarse;
+    const BoundingBox<dim>                                  cavity;
+    std::array<unsigned int, dim>                           n_coarse;
     std::vector<typename Triangulation<dim>::cell_iterator> coarse_cells;
   };
 } // namespace vefs

@@ -19,9 +19,9 @@ namespace vefs
    */
   template <int dim>
   void
-  advect_along_characteristics(TransportedFields<dim> &fields,
+  advect_along_characteristics(TransportedFields<dim>    &fields,
                                const double               tau,
-                               const BoundingBox<dim> &   cavity,
+                               const BoundingBox<dim>    &cavity,
                                const BoxMeshLocator<dim> &locator);
 } // namespace vefs
 

@@ -59,7 +59,7 @@ namespace vefs
   template <int dim>
   double
   shape_error(const TransportedFields<dim> &fields,
-              const Function<dim> &         exact_level_set);
+              const Function<dim>          &exact_level_set);
 
   /**
    * Thickness of the free surface as the flow sees it: the volume of the
@@ -69,7 +69,7 @@ namespace vefs
   template <int dim>
   double
   interface_thickness(const TransportedFields<dim> &fields,
-                      const Vector<float> &         liquid_fraction,
+                      const Vector<float>          &liquid_fraction,
                       const double                  finest_cell_size);
 
   /** Largest coordinate @p coordinate of the liquid on wall @p boundary_id. */

@@ -36,8 +36,8 @@ namespace vefs
   template <int dim>
   bool
   adapt_mesh(parallel::distributed::Triangulation<dim> &triangulation,
-             TransportedFields<dim> &                   fields,
-             const MeshLevels &                         levels,
+             TransportedFields<dim>                    &fields,
+             const MeshLevels                          &levels,
              const unsigned int                         max_cycles);
 } // namespace vefs
 

@@ -2,6 +2,7 @@
 #define vefs_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 
 #include <array>
 #include <stdexcept>
@@ -19,6 +20,17 @@ namespace vefs
   public:
     using std::runtime_error::runtime_error;
   };
+
+  /** A point from the comma-separated coordinates of an entry. */
+  template <int dim>
+  dealii::Point<dim>
+  to_point(const std::vector<double> &coordinates)
+  {
+    dealii::Point<dim> p;
+    for (unsigned int d = 0; d < dim; ++d)
+      p[d] = coordinates[d];
+    return p;
+  }
 
   /** What a cavity wall does to the liquid that touches it. */
   enum class WallType

@@ -16,25 +16,25 @@ namespace vefs
   template <int dim>
   struct StepStatistics
   {
-    unsigned int   step       = 0;
-    double         time       = 0;
-    double         tau        = 0;
-    double         cfl        = 0;
-    double         volume     = 0;
-    double         volume_change = 0;
+    unsigned int   step               = 0;
+    double         time               = 0;
+    double         tau                = 0;
+    double         cfl                = 0;
+    double         volume             = 0;
+    double         volume_change      = 0;
     double         liquid_cell_volume = 0;
     Tensor<1, dim> centroid;
-    double         kinetic_energy   = 0;
-    double         potential_energy = 0;
-    double         elastic_energy   = 0;
-    double         max_velocity     = 0;
-    double         floor_extent     = 0;
-    double         wall_height      = 0;
-    unsigned int   cells            = 0;
-    unsigned int   liquid_cells     = 0;
-    unsigned int   dofs             = 0;
+    double         kinetic_energy    = 0;
+    double         potential_energy  = 0;
+    double         elastic_energy    = 0;
+    double         max_velocity      = 0;
+    double         floor_extent      = 0;
+    double         wall_height       = 0;
+    unsigned int   cells             = 0;
+    unsigned int   liquid_cells      = 0;
+    unsigned int   dofs              = 0;
     unsigned int   linear_iterations = 0;
-    double         wall_time        = 0;
+    double         wall_time         = 0;
     /**
      * Only with an exact final shape: the L1 shape error (at the end time,
      * NaN before) and the surface thickness.
@@ -50,11 +50,11 @@ namespace vefs
    */
   template <int dim>
   void
-  measure_step(const Parameters &            parameters,
+  measure_step(const Parameters             &parameters,
                const TransportedFields<dim> &fields,
-               const Vector<float> &         liquid_fraction,
+               const Vector<float>          &liquid_fraction,
                const double                  initial_volume,
-               StepStatistics<dim> &         statistics);
+               StepStatistics<dim>          &statistics);
 
   /** The `statistics` table, one row a step, written by rank 0. */
   template <int dim>

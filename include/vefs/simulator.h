@@ -4,7 +4,6 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
-
 #include <deal.II/distributed/tria.h>
 
 #include <vefs/box_mesh_locator.h>
@@ -55,9 +54,10 @@ namespace vefs
     }
 
     void
-    report(StepStatistics<dim> &statistics, const Vector<float> &liquid_fraction);
+    report(StepStatistics<dim> &statistics,
+           const Vector<float> &liquid_fraction);
 
-    const Parameters &                        parameters;
+    const Parameters                         &parameters;
     const MPI_Comm                            comm;
     ConditionalOStream                        pcout;
     mutable TimerOutput                       timer;

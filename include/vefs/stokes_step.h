@@ -2,13 +2,9 @@
 #define vefs_stokes_step_h
 
 #include <deal.II/base/function.h>
-
 #include <deal.II/distributed/tria.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/hp/fe_collection.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
@@ -41,7 +37,7 @@ namespace vefs
   public:
     using BlockVector = TrilinosWrappers::MPI::BlockVector;
 
-    StokesStep(const Parameters &                               parameters,
+    StokesStep(const Parameters                                &parameters,
                const parallel::distributed::Triangulation<dim> &triangulation);
 
     /** Flow unknowns on the cells whose liquid fraction is >= 1/2. */
@@ -61,11 +57,12 @@ namespace vefs
      * flag them in @p known.
      */
     void
-    copy_velocity_to(TransportedFields<dim> &                    fields,
+    copy_velocity_to(TransportedFields<dim>                      &fields,
                      typename TransportedFields<dim>::VectorType &known) const;
 
     bool
-    is_liquid(const typename Triangulation<dim>::active_cell_iterator &cell) const;
+    is_liquid(
+      const typename Triangulation<dim>::active_cell_iterator &cell) const;
 
     types::global_dof_index
     n_dofs() const
@@ -97,13 +94,13 @@ namespace vefs
     is_free_surface(const typename DoFHandler<dim>::active_cell_iterator &cell,
                     const unsigned int face) const;
 
-    const Parameters &     parameters;
-    const MPI_Comm         comm;
-    hp::FECollection<dim>  fe_collection;
-    DoFHandler<dim>        dof_handler;
-    std::vector<IndexSet>  owned_partitioning;
-    std::vector<IndexSet>  relevant_partitioning;
-    AffineConstraints<double> constraints;
+    const Parameters                             &parameters;
+    const MPI_Comm                                comm;
+    hp::FECollection<dim>                         fe_collection;
+    DoFHandler<dim>                               dof_handler;
+    std::vector<IndexSet>                         owned_partitioning;
+    std::vector<IndexSet>                         relevant_partitioning;
+    AffineConstraints<double>                     constraints;
     std::array<std::unique_ptr<Function<dim>>, 6> wall_velocity;
 
     TrilinosWrappers::BlockSparseMatrix system_matrix;

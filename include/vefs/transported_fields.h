@@ -2,14 +2,10 @@
 #define vefs_transported_fields_h
 
 #include <deal.II/base/index_set.h>
-
 #include <deal.II/distributed/tria.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
@@ -37,7 +33,7 @@ namespace vefs
     /** A locally owned mesh vertex that carries its own degrees of freedom. */
     struct Node
     {
-      Point<dim>                                            point;
+      Point<dim>                                   point;
       std::array<types::global_dof_index, dim + 1> dofs;
     };
 

@@ -15,9 +15,9 @@ namespace vefs
    */
   template <int dim>
   void
-  extend_velocity(TransportedFields<dim> &                    fields,
+  extend_velocity(TransportedFields<dim>                      &fields,
                   typename TransportedFields<dim>::VectorType &known,
-                  const unsigned int                          n_layers);
+                  const unsigned int                           n_layers);
 } // namespace vefs
 
 #endif

@@ -22,12 +22,12 @@ namespace vefs
 
     void
     write(const TransportedFields<dim> &fields,
-          const StokesStep<dim> &       flow,
-          const Vector<float> &         liquid_fraction,
+          const StokesStep<dim>        &flow,
+          const Vector<float>          &liquid_fraction,
           const double                  time);
 
   private:
-    const std::string                          directory;
+    const std::string                           directory;
     std::vector<std::pair<double, std::string>> series;
   };
 } // namespace vefs
