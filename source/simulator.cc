@@ -106,10 +106,24 @@ namespace vefs
   Simulator<dim>::choose_time_step(const double max_velocity) const
   {
     double tau = parameters.time_step;
-    if (parameters.target_cfl > 0 && max_velocity > 0)
-      tau = std::min(tau,
-                     parameters.target_cfl * levels.finest_cell_size /
-                       max_velocity);
+    if (parameters.target_cfl > 0)
+      {
+        const double h = levels.finest_cell_size;
+        if (max_velocity > 0)
+          tau = std::min(tau, parameters.target_cfl * h / max_velocity);
+        else
+          {
+            // From rest, gravity alone sets the speed: |g| tau after a step,
+            // which has crossed CFL cells when tau = sqrt(CFL h / |g|).
+            double g = 0;
+            for (const double component : parameters.gravity)
+              g += component * component;
+            if (g > 0)
+              tau =
+                std::min(tau,
+                         std::sqrt(parameters.target_cfl * h / std::sqrt(g)));
+          }
+      }
     return tau;
   }
 

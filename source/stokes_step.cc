@@ -321,6 +321,10 @@ namespace vefs
     std::vector<double>                  div_u(dofs_per_cell);
     std::vector<double>                  phi_p(dofs_per_cell);
     std::vector<Tensor<1, dim>>          grad_p(dofs_per_cell);
+    std::vector<unsigned int>            component(dofs_per_cell);
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      component[i] =
+        fe_collection[liquid_index].system_to_component_index(i).first;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index)
@@ -352,22 +356,37 @@ namespace vefs
               const double         JxW = fe_values.JxW(q);
               const Tensor<1, dim> forcing =
                 rho / tau * u_star[q] + rho * gravity;
+              // Only the blocks that can be non-zero: this loop is most of
+              // the assembly, in 3D especially.
+              const double regularization =
+                1e-3 / (cavity_diameter * cavity_diameter);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
+                  const bool i_is_u = component[i] < dim;
                   for (unsigned int j = 0; j < dofs_per_cell; ++j)
                     {
-                      cell_matrix(i, j) +=
-                        (rho / tau * phi_u[i] * phi_u[j] +
-                         2 * mu * eps_u[i] * eps_u[j] - div_u[i] * phi_p[j] -
-                         phi_p[i] * div_u[j] -
-                         tau_K * (rho / tau * phi_u[j] + grad_p[j]) *
-                           grad_p[i]) *
-                        JxW;
-                      cell_schur(i, j) +=
-                        (weight * grad_p[i] * grad_p[j] +
-                         1e-3 * weight / (cavity_diameter * cavity_diameter) *
-                           phi_p[i] * phi_p[j]) *
-                        JxW;
+                      const bool j_is_u = component[j] < dim;
+                      double     a_ij   = 0;
+                      if (i_is_u && j_is_u)
+                        a_ij = (component[i] == component[j]
+                                  ? rho / tau * phi_u[i] * phi_u[j]
+                                  : 0.) +
+                               2 * mu * eps_u[i] * eps_u[j];
+                      else if (i_is_u)
+                        a_ij = -div_u[i] * phi_p[j];
+                      else if (j_is_u)
+                        a_ij = -phi_p[i] * div_u[j] -
+                               tau_K * rho / tau * phi_u[j] * grad_p[i];
+                      else
+                        {
+                          a_ij = -tau_K * grad_p[j] * grad_p[i];
+                          cell_schur(i, j) +=
+                            weight *
+                            (grad_p[i] * grad_p[j] +
+                             regularization * phi_p[i] * phi_p[j]) *
+                            JxW;
+                        }
+                      cell_matrix(i, j) += a_ij * JxW;
                     }
                   cell_rhs(i) +=
                     (forcing * phi_u[i] - tau_K * forcing * grad_p[i]) * JxW;
