@@ -323,6 +323,15 @@ namespace vefs
                         Patterns::Integer(1),
                         "Iterations after which the Krylov solver gives up "
                         "and stops the run.");
+      prm.declare_entry("AMG smoother sweeps",
+                        "4",
+                        Patterns::Integer(1, 20),
+                        "Smoother sweeps per level of the AMG V-cycle for "
+                        "the velocity block. The block is dominated by the "
+                        "mass matrix rho/tau M when rho h^2/(tau mu) is large, "
+                        "and then the smoother does most of the work: 4 "
+                        "keeps the iteration counts flat under refinement "
+                        "(measured: 2D broken dam, levels 5-7; 3D).");
       prm.declare_entry("Pressure stabilization",
                         "0.25",
                         Patterns::Double(0),
@@ -432,6 +441,7 @@ namespace vefs
     solver_tolerance       = prm.get_double("Tolerance");
     solver_max_iterations  = prm.get_integer("Maximum iterations");
     pressure_stabilization = prm.get_double("Pressure stabilization");
+    amg_smoother_sweeps    = prm.get_integer("AMG smoother sweeps");
     prm.leave_subsection();
 
     prm.enter_subsection("Transport");

@@ -459,7 +459,7 @@ namespace vefs
     TrilinosWrappers::PreconditionAMG::AdditionalData velocity_data;
     velocity_data.elliptic              = true;
     velocity_data.higher_order_elements = false;
-    velocity_data.smoother_sweeps       = 2;
+    velocity_data.smoother_sweeps       = parameters.amg_smoother_sweeps;
     velocity_data.aggregation_threshold = 0.02;
     velocity_data.constant_modes        = constant_modes;
     velocity_amg.initialize(system_matrix.block(0, 0), velocity_data);

@@ -116,6 +116,7 @@ namespace vefs
     double       solver_tolerance;
     unsigned int solver_max_iterations;
     double       pressure_stabilization;
+    unsigned int amg_smoother_sweeps;
 
     std::string prescribed_velocity;
     std::string exact_final_level_set;
