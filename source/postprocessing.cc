@@ -14,13 +14,14 @@ namespace vefs
                const TransportedFields<dim> &fields,
                const Vector<float>          &liquid_fraction,
                const double                  initial_volume,
+               const double                  expected_volume,
                StepStatistics<dim>          &s)
   {
     const MPI_Comm comm =
       fields.dof_handler.get_triangulation().get_communicator();
     const auto measure = measure_liquid(fields);
     s.volume           = measure.volume;
-    s.volume_change    = (measure.volume - initial_volume) / initial_volume;
+    s.volume_change    = (measure.volume - expected_volume) / initial_volume;
     s.centroid         = measure.first_moment / measure.volume;
 
     Tensor<1, dim> gravity;
@@ -91,8 +92,9 @@ namespace vefs
     file.open(directory + "/statistics");
     AssertThrow(file, ExcMessage("Cannot write " + directory + "/statistics"));
     file << "# vefs statistics, one row per time step, SI units.\n"
-         << "# volume: liquid volume from phi; volume_change: relative to "
-            "t = 0; floor_extent: largest x of liquid on the floor; "
+         << "# volume: liquid volume from phi; volume_change: (volume - "
+            "initial volume - inflow through the walls) / initial volume; "
+            "floor_extent: largest x of liquid on the floor; "
             "wall_height: highest liquid on the x- wall.\n"
          << "# step time tau cfl volume volume_change liquid_cell_volume "
             "centroid_x centroid_y"
@@ -131,11 +133,13 @@ namespace vefs
                   const TransportedFields<2> &,
                   const Vector<float> &,
                   const double,
+                  const double,
                   StepStatistics<2> &);
   template void
   measure_step<3>(const Parameters &,
                   const TransportedFields<3> &,
                   const Vector<float> &,
+                  const double,
                   const double,
                   StepStatistics<3> &);
   template class StatisticsFile<2>;

@@ -95,7 +95,8 @@ namespace vefs
         prescribed_velocity->set_time(0);
         fields.set_velocity(*prescribed_velocity);
       }
-    initial_volume = measure_liquid(fields).volume;
+    initial_volume  = measure_liquid(fields).volume;
+    expected_volume = initial_volume;
     if (!(initial_volume > 0))
       throw InputError("entry 'Initial liquid/Shape': the initial liquid "
                        "does not intersect the cavity");
@@ -172,7 +173,7 @@ namespace vefs
               statistics.step % parameters.redistancing_interval == 0)
             redistance(fields);
           if (parameters.volume_correction)
-            correct_volume(fields, initial_volume);
+            correct_volume(fields, expected_volume);
         }
 
         // 2. Mesh: refine around the new free surface, mark liquid cells.
@@ -192,6 +193,7 @@ namespace vefs
           {
             statistics.linear_iterations =
               diffusion_step(liquid_fraction, statistics.time + tau, tau);
+            expected_volume -= tau * flow.outflow_rate();
           }
 
         statistics.time += tau;
@@ -241,6 +243,7 @@ namespace vefs
                    fields,
                    liquid_fraction,
                    initial_volume,
+                   expected_volume,
                    statistics);
       statistics.dofs = flow.n_dofs();
       if (exact_final_level_set)

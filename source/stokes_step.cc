@@ -514,6 +514,34 @@ namespace vefs
   }
 
   template <int dim>
+  double
+  StokesStep<dim>::outflow_rate() const
+  {
+    const QGauss<dim - 1>            face_quadrature(2);
+    FEFaceValues<dim>                face_values(fe_collection[liquid_index],
+                                  face_quadrature,
+                                  update_values | update_normal_vectors |
+                                    update_JxW_values);
+    const FEValuesExtractors::Vector velocity(0);
+    std::vector<Tensor<1, dim>>      u(face_quadrature.size());
+    double                           rate = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index &&
+          cell->at_boundary())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f))
+            {
+              face_values.reinit(cell, f);
+              face_values[velocity].get_function_values(solution, u);
+              for (const unsigned int q :
+                   face_values.quadrature_point_indices())
+                rate +=
+                  u[q] * face_values.normal_vector(q) * face_values.JxW(q);
+            }
+    return Utilities::MPI::sum(rate, comm);
+  }
+
+  template <int dim>
   void
   StokesStep<dim>::copy_velocity_to(
     TransportedFields<dim>                      &fields,

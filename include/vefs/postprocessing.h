@@ -16,11 +16,12 @@ namespace vefs
   template <int dim>
   struct StepStatistics
   {
-    unsigned int   step               = 0;
-    double         time               = 0;
-    double         tau                = 0;
-    double         cfl                = 0;
-    double         volume             = 0;
+    unsigned int step   = 0;
+    double       time   = 0;
+    double       tau    = 0;
+    double       cfl    = 0;
+    double       volume = 0;
+    /** Conservation error: (volume - initial - inflow) / initial. */
     double         volume_change      = 0;
     double         liquid_cell_volume = 0;
     Tensor<1, dim> centroid;
@@ -54,6 +55,7 @@ namespace vefs
                const TransportedFields<dim> &fields,
                const Vector<float>          &liquid_fraction,
                const double                  initial_volume,
+               const double                  expected_volume,
                StepStatistics<dim>          &statistics);
 
   /** The `statistics` table, one row a step, written by rank 0. */

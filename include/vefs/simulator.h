@@ -72,7 +72,9 @@ namespace vefs
     std::unique_ptr<Function<dim>>            prescribed_velocity;
     std::unique_ptr<Function<dim>>            exact_final_level_set;
     double                                    initial_volume = 0;
-    Timer                                     wall_clock;
+    /** The initial volume plus what entered through the walls so far. */
+    double expected_volume = 0;
+    Timer  wall_clock;
   };
 } // namespace vefs
 

@@ -60,6 +60,14 @@ namespace vefs
     copy_velocity_to(TransportedFields<dim>                      &fields,
                      typename TransportedFields<dim>::VectorType &known) const;
 
+    /**
+     * Net rate (m^3/s, m^2/s in 2D) at which liquid leaves through the
+     * cavity walls: the integral of u.n over the liquid's faces on them
+     * (non-zero on 'velocity' and 'open' walls only).
+     */
+    double
+    outflow_rate() const;
+
     bool
     is_liquid(
       const typename Triangulation<dim>::active_cell_iterator &cell) const;
