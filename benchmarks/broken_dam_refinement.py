@@ -6,7 +6,7 @@ Usage:
       [--levels 4 5 6] [--prm prm/broken_dam_2d.prm]
       [--results-dir benchmarks/results] [--doc doc/broken_dam_refinement.md]
       [--dry-run] [--no-run] [--a 0.05715] [--g 9.81] [--reference-dir DIR]
-      [--max-shift 0.3]
+      [--max-shift 0.3] [--revision TEXT]
 
 For every maximum refinement level L a copy of the prm file is written to
 <results-dir>/broken_dam_2d_L<L>_np<N>.prm with
@@ -21,6 +21,9 @@ Markdown table is written to --doc and printed.
 
 --dry-run only prints the generated prm files; --no-run skips the runs and
 tabulates existing results (wall times from the .json files).
+--revision records TEXT as the git revision of the executable instead of the
+one derived from the working tree (for an executable built elsewhere, e.g.
+from `git archive COMMIT`, while the working tree has other changes).
 Relative paths are taken relative to the current directory if they exist
 there, otherwise relative to the repository root.
 """
@@ -334,6 +337,9 @@ def parse_args(argv=None):
     p.add_argument("--g", type=float, default=cmm.DEFAULT_G)
     p.add_argument("--reference-dir", default=cmm.DEFAULT_REFERENCE_DIR)
     p.add_argument("--max-shift", type=float, default=0.3)
+    p.add_argument("--revision", default=None,
+                   help="git revision to record for the executable (default: "
+                   "HEAD of the working tree and its code changes)")
     return p.parse_args(argv)
 
 
@@ -379,7 +385,8 @@ def main(argv=None):
         # recorded in every run's .json so that --no-run can report them
         provenance = {"study_command": this_command,
                       "executable": executable_info(vefs),
-                      "git_revision": git_revision(vefs),
+                      "git_revision": (args.revision if args.revision
+                                       else git_revision(vefs)),
                       "date": datetime.date.today().isoformat()}
     rows = []
     commands = []
@@ -469,9 +476,9 @@ def main(argv=None):
                          r["steps"], _f("%.2f", r["max_cfl"]),
                          _f("%d", r["cells"]),
                          _f("%d", r["dofs"]), _f("%.1f", r["mean_its"]),
-                         _f("%.1f", r["wall"]), _f("%.2g", r["height"]),
-                         _f("%.2g", r["front_raw"]), _f("%.3f", r["shift"]),
-                         _f("%.2g", r["front_shifted"]),
+                         _f("%.1f", r["wall"]), _f("%#.2g", r["height"]),
+                         _f("%#.2g", r["front_raw"]), _f("%.3f", r["shift"]),
+                         _f("%#.2g", r["front_shifted"]),
                          _f("%.2g", r["volume_change"]),
                          _f("%.2g", r["cell_volume_change"])))
     lines.append("")

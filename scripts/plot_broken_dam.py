@@ -32,6 +32,11 @@ import compare_martin_moyce as cmm  # noqa: E402
 DEFAULT_OUTPUT = os.path.join(cmm.REPO_ROOT, "doc", "broken_dam_front.png")
 
 
+def _e(x):
+    """Two significant digits, trailing zeros kept (0.030, not 0.03)."""
+    return "n/a" if x is None else "%#.2g" % x
+
+
 def parse_args(argv=None):
     p = argparse.ArgumentParser(description=__doc__.split("\n")[1])
     p.add_argument("output_dirs", nargs="+", metavar="OUTPUT_DIR",
@@ -82,10 +87,10 @@ def main(argv=None):
                   label="%s, raw" % name)
         ax_f.plot([x + s for x in sim["T"]], sim["Z"], "-", color=c, lw=1.6,
                   label="%s, shifted by %.3f (max err %s)"
-                  % (name, s, cmm._e(err)))
+                  % (name, s, _e(err)))
         ax_h.plot(sim["tau"], sim["H"], "-", color=c, lw=1.6,
                   label="%s (max err %s, $\\tau\\leq2$)"
-                  % (name, cmm._e(r["height_max"])))
+                  % (name, _e(r["height_max"])))
 
     ax_f.plot(t_ref, z_ref, "ko", ms=5, mfc="none",
               label="Martin & Moyce (1952)")
