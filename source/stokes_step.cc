@@ -110,19 +110,6 @@ namespace vefs
 
   template <int dim>
   bool
-  StokesStep<dim>::is_liquid(
-    const typename Triangulation<dim>::active_cell_iterator &cell) const
-  {
-    return typename DoFHandler<dim>::active_cell_iterator(
-             &dof_handler.get_triangulation(),
-             cell->level(),
-             cell->index(),
-             &dof_handler)
-             ->active_fe_index() == liquid_index;
-  }
-
-  template <int dim>
-  bool
   StokesStep<dim>::is_free_surface(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const unsigned int                                    face) const
@@ -149,9 +136,8 @@ namespace vefs
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         cell->set_active_fe_index(
-          vefs::is_liquid(liquid_fraction[cell->active_cell_index()])
-            ? liquid_index
-            : empty_index);
+          is_liquid(liquid_fraction[cell->active_cell_index()]) ? liquid_index
+                                                                : empty_index);
     dof_handler.distribute_dofs(fe_collection);
 
     std::vector<unsigned int> block_component(dim + 1, 0);

@@ -68,10 +68,6 @@ namespace vefs
     double
     outflow_rate() const;
 
-    bool
-    is_liquid(
-      const typename Triangulation<dim>::active_cell_iterator &cell) const;
-
     types::global_dof_index
     n_dofs() const
     {
