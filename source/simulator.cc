@@ -129,6 +129,48 @@ namespace vefs
   }
 
   template <int dim>
+  double
+  Simulator<dim>::prescribed_speed(const double time) const
+  {
+    prescribed_velocity->set_time(time);
+    double speed = 0;
+    for (const auto &node : fields.nodes())
+      if (fields.fields(
+            node.dofs[TransportedFields<dim>::level_set_component]) <= 0)
+        {
+          Tensor<1, dim> u;
+          for (unsigned int d = 0; d < dim; ++d)
+            u[d] = prescribed_velocity->value(node.point, d);
+          speed = std::max(speed, u.norm());
+        }
+    return Utilities::MPI::max(speed, comm);
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::choose_prescribed_time_step(const double time) const
+  {
+    // A time-dependent velocity may speed up within the step (after the
+    // reversal of the deformation test, say): bound the speed at the start,
+    // middle and end of the step, and shrink the step until it fits.
+    double tau = std::min(parameters.time_step, parameters.end_time - time);
+    if (parameters.target_cfl == 0)
+      return tau;
+    for (unsigned int iteration = 0; iteration < 10; ++iteration)
+      {
+        const double speed = std::max({prescribed_speed(time),
+                                       prescribed_speed(time + tau / 2),
+                                       prescribed_speed(time + tau)});
+        const double allowed =
+          parameters.target_cfl * levels.finest_cell_size / speed;
+        if (speed == 0 || tau <= allowed * (1 + 1e-12))
+          break;
+        tau = allowed;
+      }
+    return tau;
+  }
+
+  template <int dim>
   void
   Simulator<dim>::run()
   {
@@ -152,8 +194,11 @@ namespace vefs
 
     while (!is_last_step(statistics))
       {
-        const double tau = std::min(choose_time_step(statistics.max_velocity),
-                                    parameters.end_time - statistics.time);
+        const double tau =
+          prescribed_velocity
+            ? choose_prescribed_time_step(statistics.time)
+            : std::min(choose_time_step(statistics.max_velocity),
+                       parameters.end_time - statistics.time);
         ++statistics.step;
         statistics.tau = tau;
         statistics.cfl =

@@ -41,6 +41,17 @@ namespace vefs
     double
     choose_time_step(const double max_velocity) const;
 
+    /** Largest prescribed speed in the liquid at @p time. */
+    double
+    prescribed_speed(const double time) const;
+
+    /**
+     * Time step with a prescribed velocity: the target CFL number holds
+     * for the speed over the whole step, not only at its start.
+     */
+    double
+    choose_prescribed_time_step(const double time) const;
+
     /** Steps 3 and 4 of the design: returns the Krylov iterations. */
     unsigned int
     diffusion_step(const Vector<float> &liquid_fraction,
