@@ -58,6 +58,9 @@ namespace vefs
                   lowest  = std::min(lowest, psi);
                   highest = std::max(highest, psi);
                 }
+              // Remembered for the partitioner (children inherit it): the
+              // flow is solved on liquid cells only.
+              cell->set_material_id(lowest < 0 ? liquid_material_id : 0);
               const unsigned int target = levels.target_level(lowest, highest);
               const unsigned int level  = cell->level();
               if (level < target)

@@ -73,6 +73,13 @@ namespace vefs
       cavity.get_boundary_points().first,
       cavity.get_boundary_points().second,
       true);
+    // p4est balances the work: a cell with liquid costs the flow solve, an
+    // empty one only the transport.
+    triangulation.signals.weight.connect(
+      [](const typename Triangulation<dim>::cell_iterator &cell,
+         const typename Triangulation<dim>::CellStatus) -> unsigned int {
+        return cell->material_id() == liquid_material_id ? 4 : 1;
+      });
     locator = std::make_unique<BoxMeshLocator<dim>>(triangulation,
                                                     cavity,
                                                     subdivisions);

@@ -6,6 +6,9 @@
 
 namespace vefs
 {
+  /** Material id of cells with liquid, for the weighted partitioning. */
+  constexpr types::material_id liquid_material_id = 1;
+
   /**
    * Refinement levels tied to the free surface (design section 2, step 2):
    * the finest level in a band around psi = 0, the bulk level inside the
