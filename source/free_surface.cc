@@ -210,6 +210,7 @@ namespace vefs
   double
   interface_thickness(const TransportedFields<dim> &fields,
                       const Vector<float>          &liquid_fraction,
+                      const double                  surface_area,
                       const double                  finest_cell_size)
   {
     double mixed_volume = 0;
@@ -223,8 +224,7 @@ namespace vefs
     const auto &triangulation = fields.dof_handler.get_triangulation();
     mixed_volume =
       Utilities::MPI::sum(mixed_volume, triangulation.get_communicator());
-    return mixed_volume / measure_liquid(fields).surface_area /
-           finest_cell_size;
+    return mixed_volume / surface_area / finest_cell_size;
   }
 
   template <int dim>
@@ -278,6 +278,7 @@ namespace vefs
                                      const Function<dim> &);                     \
   template double        interface_thickness(const TransportedFields<dim> &,     \
                                              const Vector<float> &,              \
+                                             const double,                       \
                                              const double);                      \
   template double        liquid_extent_on_wall(const TransportedFields<dim> &,   \
                                                const types::boundary_id,         \

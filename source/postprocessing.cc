@@ -21,6 +21,7 @@ namespace vefs
       fields.dof_handler.get_triangulation().get_communicator();
     const auto measure = measure_liquid(fields);
     s.volume           = measure.volume;
+    s.surface_area     = measure.surface_area;
     s.volume_change    = (measure.volume - expected_volume) / initial_volume;
     s.centroid         = measure.first_moment / measure.volume;
 

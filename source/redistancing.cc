@@ -110,15 +110,14 @@ namespace vefs
       return;
 
     const auto tree = pack_rtree(all_crossings);
+    Point<dim> nearest;
     for (const auto &node : fields.nodes())
       {
         const auto dof = node.dofs[c];
         if (keep[fields.owned_dofs.index_within_set(dof)])
           continue;
-        std::vector<Point<dim>> nearest;
-        tree.query(boost::geometry::index::nearest(node.point, 1),
-                   std::back_inserter(nearest));
-        const double distance = node.point.distance(nearest[0]);
+        tree.query(boost::geometry::index::nearest(node.point, 1), &nearest);
+        const double distance = node.point.distance(nearest);
         fields.fields(dof)    = psi(dof) < 0 ? -distance : distance;
       }
     fields.finalize();

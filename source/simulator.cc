@@ -308,6 +308,7 @@ namespace vefs
           statistics.interface_thickness =
             interface_thickness(fields,
                                 liquid_fraction,
+                                statistics.surface_area,
                                 levels.finest_cell_size);
         }
       statistics.wall_time = wall_clock.wall_time();

@@ -63,13 +63,15 @@ namespace vefs
 
   /**
    * Thickness of the free surface as the flow sees it: the volume of the
-   * partly filled cells (0.01 < fraction < 0.99) per unit surface area,
+   * partly filled cells (0.01 < fraction < 0.99) per unit @p surface_area
+   * (from measure_liquid(), so that the surface is not measured twice),
    * divided by the finest cell size. About one for a sharp surface.
    */
   template <int dim>
   double
   interface_thickness(const TransportedFields<dim> &fields,
                       const Vector<float>          &liquid_fraction,
+                      const double                  surface_area,
                       const double                  finest_cell_size);
 
   /** Largest coordinate @p coordinate of the liquid on wall @p boundary_id. */

@@ -42,6 +42,8 @@ namespace vefs
      */
     double shape_error         = 0;
     double interface_thickness = 0;
+    /** Area (length in 2D) of the free surface. */
+    double surface_area = 0;
   };
 
   /**
