@@ -8,6 +8,7 @@ namespace vefs
     : min_level(parameters.min_level)
     , bulk_level(parameters.bulk_level)
     , max_level(parameters.max_level)
+    , band_width(parameters.band_width)
   {
     finest_cell_size = std::numeric_limits<double>::max();
     for (unsigned int d = 0; d < parameters.dimension; ++d)
@@ -15,11 +16,16 @@ namespace vefs
         std::min(finest_cell_size,
                  (parameters.cavity_upper[d] - parameters.cavity_lower[d]) /
                    parameters.coarse_subdivisions[d] / (1u << max_level));
-    // The surface moves up to target CFL finest cells per step: the band
-    // must be wider than that or the surface leaves the fine region.
+    expect_cfl(parameters.target_cfl);
+  }
+
+  void
+  MeshLevels::expect_cfl(const double cfl)
+  {
+    // The surface moves up to CFL finest cells per step: the band must be
+    // wider than that or the surface leaves the fine region.
     band_half_width =
-      std::max(parameters.band_width, parameters.target_cfl + 2) *
-      finest_cell_size;
+      std::max<double>(band_width, std::ceil(cfl) + 2) * finest_cell_size;
   }
 
   unsigned int

@@ -231,6 +231,8 @@ namespace vefs
         // 2. Mesh: refine around the new free surface, mark liquid cells.
         {
           TimerOutput::Scope scope(timer, "2 mesh adaptation");
+          // The next step moves the surface about as far as this one did.
+          levels.expect_cfl(std::max(parameters.target_cfl, statistics.cfl));
           adapt_mesh(triangulation, fields, levels, 1);
           liquid_fraction = liquid_fractions(fields);
         }

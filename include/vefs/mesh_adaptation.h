@@ -19,6 +19,13 @@ namespace vefs
   public:
     MeshLevels(const Parameters &parameters);
 
+    /**
+     * Widen the band for steps of @p cfl finest cells (at least the
+     * parameter "Band width"): the surface must not leave it in one step.
+     */
+    void
+    expect_cfl(const double cfl);
+
     unsigned int
     target_level(const double psi_lowest, const double psi_highest) const;
 
@@ -27,6 +34,7 @@ namespace vefs
 
   private:
     unsigned int min_level, bulk_level, max_level;
+    double       band_width;
     double       band_half_width;
   };
 

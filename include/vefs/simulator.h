@@ -75,7 +75,7 @@ namespace vefs
     parallel::distributed::Triangulation<dim> triangulation;
     BoundingBox<dim>                          cavity;
     std::unique_ptr<BoxMeshLocator<dim>>      locator;
-    const MeshLevels                          levels;
+    MeshLevels                                levels;
     TransportedFields<dim>                    fields;
     StokesStep<dim>                           flow;
     StatisticsFile<dim>                       statistics_file;
