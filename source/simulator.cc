@@ -210,6 +210,9 @@ namespace vefs
         statistics.tau = tau;
         statistics.cfl =
           tau * statistics.max_velocity / levels.finest_cell_size;
+        // The next step moves the surface about as far as this one.
+        const double expected_cfl =
+          std::max(parameters.target_cfl, statistics.cfl);
 
         // 1. Advection: phi and u along the characteristics.
         {
@@ -231,8 +234,7 @@ namespace vefs
         // 2. Mesh: refine around the new free surface, mark liquid cells.
         {
           TimerOutput::Scope scope(timer, "2 mesh adaptation");
-          // The next step moves the surface about as far as this one did.
-          levels.expect_cfl(std::max(parameters.target_cfl, statistics.cfl));
+          levels.expect_cfl(expected_cfl);
           adapt_mesh(triangulation, fields, levels, 1);
           liquid_fraction = liquid_fractions(fields);
         }
@@ -246,7 +248,10 @@ namespace vefs
         else
           {
             statistics.linear_iterations =
-              diffusion_step(liquid_fraction, statistics.time + tau, tau);
+              diffusion_step(liquid_fraction,
+                             statistics.time + tau,
+                             tau,
+                             expected_cfl);
             expected_volume -= tau * flow.outflow_rate();
           }
 
@@ -259,7 +264,8 @@ namespace vefs
   unsigned int
   Simulator<dim>::diffusion_step(const Vector<float> &liquid_fraction,
                                  const double         new_time,
-                                 const double         tau)
+                                 const double         tau,
+                                 const double         expected_cfl)
   {
     unsigned int iterations;
     {
@@ -276,12 +282,15 @@ namespace vefs
     }
     {
       // The next characteristics trace back through the band around the
-      // liquid: give it the new velocity.
+      // liquid: give it the new velocity, as far as the surface can move.
       TimerOutput::Scope scope(timer, "velocity extension");
       typename TransportedFields<dim>::VectorType known;
       fields.initialize_vector(known);
       flow.copy_velocity_to(fields, known);
-      extend_velocity(fields, known, parameters.extension_layers);
+      const unsigned int layers =
+        std::max<unsigned int>(parameters.extension_layers,
+                               std::ceil(expected_cfl) + 2);
+      extend_velocity(fields, known, layers);
     }
     return iterations;
   }

@@ -52,11 +52,16 @@ namespace vefs
     double
     choose_prescribed_time_step(const double time) const;
 
-    /** Steps 3 and 4 of the design: returns the Krylov iterations. */
+    /**
+     * Steps 3 and 4 of the design, then the new velocity extended beyond
+     * the liquid for the next characteristics, at least @p expected_cfl
+     * cells wide: returns the Krylov iterations.
+     */
     unsigned int
     diffusion_step(const Vector<float> &liquid_fraction,
                    const double         new_time,
-                   const double         tau);
+                   const double         tau,
+                   const double         expected_cfl);
 
     bool
     is_last_step(const StepStatistics<dim> &statistics) const
