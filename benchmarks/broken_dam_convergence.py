@@ -135,6 +135,19 @@ def main(argv=None):
                          % (r["H_err"], r["max_cfl"], r["wall_time"]))
         lines.append("| %d | %s |" % (level, " | ".join(cells)))
 
+    lines += ["", "## Surge front: largest relative error after the fitted "
+              "shift s of T (1 <= T <= 3), and s", "",
+              "Reference: `../shared/reference/martin_moyce_1952_n2_2_front.csv`"
+              " (see `scripts/compare_martin_moyce.py`).", "",
+              "| L | " + " | ".join("tau = %g ms" % (t * 1000)
+                                    for t in args.time_steps) + " |",
+              "|---|" + "---|" * len(args.time_steps)]
+    for level in args.levels:
+        lines.append("| %d | %s |" % (level, " | ".join(
+            "%.3f (s = %.3f)" % (runs[(level, tau)]["front_shifted"],
+                                 runs[(level, tau)]["shift"])
+            for tau in args.time_steps)))
+
     # the diagonals of fixed CFL: tau halves when L grows by one
     lines += ["", "## Residual height along lines of fixed CFL number", "",
               "H_sim at the reference points; the last row of each block "

@@ -290,13 +290,16 @@ namespace vefs
                         Patterns::Double(1),
                         "Half width of the finest band around the free "
                         "surface, in finest cells. The band is widened to "
-                        "target CFL + 2 cells so that the surface cannot "
-                        "leave it within a step.");
+                        "CFL + 2 cells (the target CFL, or the CFL number "
+                        "of the last step if larger) so that the surface "
+                        "cannot leave it within a step.");
       prm.declare_entry("Extension layers",
                         "4",
                         Patterns::Integer(1, 100),
                         "Number of cell layers beyond the liquid into which "
-                        "the velocity is extended for the characteristics.");
+                        "the velocity is extended for the characteristics; "
+                        "at least CFL + 2 layers are used, as for the "
+                        "band.");
       prm.declare_entry("Redistancing interval",
                         "1",
                         Patterns::Integer(0),
