@@ -34,6 +34,37 @@ namespace
     const auto start = message.find_first_not_of(" \n");
     return start == std::string::npos ? message : message.substr(start);
   }
+
+  /**
+   * Run the scene; returns the error that stopped it, or nothing. The
+   * error is caught while the simulator still exists, so that it closes
+   * normally (its timer would otherwise complain about unwinding).
+   */
+  template <int dim>
+  std::string
+  simulate(const vefs::Parameters         &parameters,
+           const dealii::ParameterHandler &prm,
+           const std::string              &where)
+  {
+    vefs::Simulator<dim> simulator(parameters, prm);
+    try
+      {
+        simulator.run();
+      }
+    catch (const vefs::InputError &error)
+      {
+        return "error in " + where + ": " + error.what();
+      }
+    catch (const vefs::SolverError &error)
+      {
+        return error.what();
+      }
+    catch (const dealii::ExceptionBase &error)
+      {
+        return message_of(error);
+      }
+    return "";
+  }
 } // namespace
 
 int
@@ -100,10 +131,11 @@ main(int argc, char *argv[])
 
   try
     {
-      if (parameters.dimension == 2)
-        Simulator<2>(parameters, prm).run();
-      else
-        Simulator<3>(parameters, prm).run();
+      const std::string error = parameters.dimension == 2
+                                  ? simulate<2>(parameters, prm, where)
+                                  : simulate<3>(parameters, prm, where);
+      if (!error.empty())
+        return fail(error);
     }
   catch (const InputError &error)
     {

@@ -247,11 +247,10 @@ namespace vefs
           }
         else
           {
-            statistics.linear_iterations =
-              diffusion_step(liquid_fraction,
-                             statistics.time + tau,
-                             tau,
-                             expected_cfl);
+            statistics.linear_iterations = diffusion_step(liquid_fraction,
+                                                          statistics.time + tau,
+                                                          tau,
+                                                          expected_cfl);
             expected_volume -= tau * flow.outflow_rate();
           }
 

@@ -17,6 +17,9 @@
 #include <vefs/initial_liquid.h>
 #include <vefs/stokes_step.h>
 
+#include <iomanip>
+#include <sstream>
+
 namespace vefs
 {
   namespace
@@ -485,12 +488,15 @@ namespace vefs
       }
     catch (const SolverControl::NoConvergence &failure)
       {
-        throw SolverError(
-          "the Stokes solver did not converge: residual " +
-          std::to_string(failure.last_residual) + " after " +
-          std::to_string(failure.last_step) + " iterations (tolerance " +
-          std::to_string(control.tolerance()) +
-          "). Reduce 'Time/Time step' or raise 'Solver/Maximum iterations'.");
+        std::ostringstream message;
+        message << std::scientific << std::setprecision(2)
+                << "the Stokes solver did not converge: residual "
+                << failure.last_residual << " after " << failure.last_step
+                << " iterations (tolerance " << control.tolerance()
+                << " = 'Solver/Tolerance' times the right-hand side norm). "
+                << "Reduce 'Time/Time step' or raise 'Solver/Maximum "
+                << "iterations'.";
+        throw SolverError(message.str());
       }
     constraints.distribute(distributed);
     AssertThrow(std::isfinite(distributed.l2_norm()),
