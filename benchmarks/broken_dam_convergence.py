@@ -84,21 +84,9 @@ def main(argv=None):
             name = run_name(level, tau)
             out_dir = os.path.join(results, name)
             info_file = os.path.join(results, name + ".json")
-            if not args.no_run:
-                prm_file = os.path.join(results, name + ".prm")
-                with open(prm_file, "w") as f:
-                    f.write(make_prm(base, level, tau, out_dir))
-                status, wall = bdr.run_vefs(
-                    bdr.vefs_command(vefs, 1, prm_file),
-                    os.path.join(results, name + ".log"), 1)
-                if status != 0:
-                    print("%s failed (see %s.log)" % (name, name),
-                          file=sys.stderr)
-                    return 1
-                with open(info_file, "w") as f:
-                    json.dump({"wall_time": wall,
-                               "revision": bdr.git_revision(vefs)}, f)
-                print("%s: %.1f s" % (name, wall), flush=True)
+            if not args.no_run and not bdr.run_serial_scene(
+                    vefs, results, name, make_prm(base, level, tau, out_dir)):
+                return 1
             with open(info_file) as f:
                 info = json.load(f)
             runs[(level, tau)] = dict(analyse(out_dir), **info)

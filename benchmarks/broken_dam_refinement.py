@@ -277,6 +277,24 @@ def run_vefs(cmd, log_file, np):
     return proc.returncode, wall
 
 
+def run_serial_scene(vefs, results, name, prm_text):
+    """Write <results>/<name>.prm, run vefs on it on one rank (log in
+    <name>.log) and record the wall time and the git revision of the
+    executable in <name>.json. Returns True if vefs succeeded."""
+    prm_file = os.path.join(results, name + ".prm")
+    with open(prm_file, "w") as f:
+        f.write(prm_text)
+    status, wall = run_vefs(vefs_command(vefs, 1, prm_file),
+                            os.path.join(results, name + ".log"), 1)
+    if status != 0:
+        print("%s failed (see %s.log)" % (name, name), file=sys.stderr)
+        return False
+    with open(os.path.join(results, name + ".json"), "w") as f:
+        json.dump({"wall_time": wall, "revision": git_revision(vefs)}, f)
+    print("%s: %.1f s" % (name, wall), flush=True)
+    return True
+
+
 def summarize(output_dir, args):
     r = cmm.analyse(output_dir, args.a, args.g, args.reference_dir,
                     args.max_shift)

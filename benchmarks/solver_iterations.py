@@ -71,19 +71,8 @@ def main(argv=None):
                                      repr(args.end_time))
                 text = bdr.set_entry(text, ["Time"], "Time step", repr(tau))
                 text = bdr.set_entry(text, ["Output"], "Interval", "0")
-                prm_file = os.path.join(results, name + ".prm")
-                with open(prm_file, "w") as f:
-                    f.write(text)
-                status, wall = bdr.run_vefs(
-                    bdr.vefs_command(vefs, 1, prm_file),
-                    os.path.join(results, name + ".log"), 1)
-                if status != 0:
-                    print("%s failed (see %s.log)" % (name, name),
-                          file=sys.stderr)
+                if not bdr.run_serial_scene(vefs, results, name, text):
                     return 1
-                with open(info_file, "w") as f:
-                    json.dump({"wall_time": wall,
-                               "revision": bdr.git_revision(vefs)}, f)
             with open(info_file) as f:
                 revision = revision or json.load(f)["revision"]
             stats = read_statistics(out_dir)
