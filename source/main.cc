@@ -63,6 +63,10 @@ namespace
       {
         return message_of(error);
       }
+    catch (const std::exception &error)
+      {
+        return error.what();
+      }
     return "";
   }
 } // namespace
