@@ -22,19 +22,48 @@ namespace vefs
       return q;
     }
 
+    /** Values of all components of the fields at one point. */
+    template <int dim>
+    using FieldValues =
+      Tensor<1, TransportedFields<dim>::max_components, double>;
+
+    /** The fields at @p points through RemotePointEvaluation. */
+    template <int dim, int n_components>
+    std::vector<FieldValues<dim>>
+    evaluate_remotely(const std::vector<Point<dim>> &points,
+                      const TransportedFields<dim>  &fields)
+    {
+      Utilities::MPI::RemotePointEvaluation<dim> evaluation;
+      evaluation.reinit(points,
+                        fields.dof_handler.get_triangulation(),
+                        fields.mapping);
+      AssertThrow(evaluation.all_points_found(),
+                  ExcMessage("A characteristic foot lies outside the mesh."));
+      const auto values =
+        VectorTools::point_values<n_components>(evaluation,
+                                                fields.dof_handler,
+                                                fields.fields);
+      std::vector<FieldValues<dim>> result(points.size());
+      for (unsigned int k = 0; k < points.size(); ++k)
+        for (unsigned int c = 0; c < n_components; ++c)
+          result[k][c] = values[k][c];
+      return result;
+    }
+
     /**
      * The fields at arbitrary points: in the local part of the mesh (owned
      * and ghost cells) by Q1 interpolation in the cell the locator finds,
      * elsewhere through RemotePointEvaluation on the ranks that own them.
      */
     template <int dim>
-    std::vector<Tensor<1, dim + 1>>
+    std::vector<FieldValues<dim>>
     evaluate_at(const std::vector<Point<dim>> &points,
                 const TransportedFields<dim>  &fields,
                 const BoxMeshLocator<dim>     &locator)
     {
-      std::vector<Tensor<1, dim + 1>> values(points.size());
-      std::vector<unsigned int>       remote;
+      const unsigned int            n_components = fields.n_components;
+      std::vector<FieldValues<dim>> values(points.size());
+      std::vector<unsigned int>     remote;
       for (unsigned int i = 0; i < points.size(); ++i)
         {
           const auto cell = locator.locate(points[i]);
@@ -51,7 +80,7 @@ namespace vefs
               double weight = 1;
               for (unsigned int d = 0; d < dim; ++d)
                 weight *= ((v >> d) & 1) ? xi[d] : 1 - xi[d];
-              for (unsigned int c = 0; c < dim + 1; ++c)
+              for (unsigned int c = 0; c < n_components; ++c)
                 values[i][c] +=
                   weight * fields.fields(dof_cell->vertex_dof_index(v, c));
             }
@@ -65,14 +94,12 @@ namespace vefs
       std::vector<Point<dim>> remote_points;
       for (const unsigned int i : remote)
         remote_points.push_back(points[i]);
-      Utilities::MPI::RemotePointEvaluation<dim> evaluation;
-      evaluation.reinit(remote_points, triangulation, fields.mapping);
-      AssertThrow(evaluation.all_points_found(),
-                  ExcMessage("A characteristic foot lies outside the mesh."));
       const auto remote_values =
-        VectorTools::point_values<dim + 1>(evaluation,
-                                           fields.dof_handler,
-                                           fields.fields);
+        fields.has_stress()
+          ? evaluate_remotely<dim, TransportedFields<dim>::max_components>(
+              remote_points,
+              fields)
+          : evaluate_remotely<dim, dim + 1>(remote_points, fields);
       for (unsigned int k = 0; k < remote.size(); ++k)
         values[remote[k]] = remote_values[k];
       return values;
@@ -90,12 +117,9 @@ namespace vefs
 
     std::vector<Point<dim>> points(nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
-      {
-        Tensor<1, dim> u;
-        for (unsigned int d = 0; d < dim; ++d)
-          u[d] = fields.fields(nodes[i].dofs[d]);
-        points[i] = clamp_to(cavity, nodes[i].point - 0.5 * tau * u);
-      }
+      points[i] =
+        clamp_to(cavity,
+                 nodes[i].point - 0.5 * tau * fields.velocity(nodes[i]));
     const auto at_midpoints = evaluate_at(points, fields, locator);
 
     for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -108,7 +132,7 @@ namespace vefs
     const auto at_feet = evaluate_at(points, fields, locator);
 
     for (unsigned int i = 0; i < nodes.size(); ++i)
-      for (unsigned int c = 0; c < dim + 1; ++c)
+      for (unsigned int c = 0; c < fields.n_components; ++c)
         fields.fields(nodes[i].dofs[c]) = at_feet[i][c];
     fields.finalize();
   }

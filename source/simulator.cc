@@ -1,11 +1,11 @@
 #include <deal.II/grid/grid_generator.h>
 
 #include <vefs/characteristics.h>
+#include <vefs/field_extension.h>
 #include <vefs/free_surface.h>
 #include <vefs/initial_liquid.h>
 #include <vefs/redistancing.h>
 #include <vefs/simulator.h>
-#include <vefs/velocity_extension.h>
 
 #include <filesystem>
 #include <iomanip>
@@ -41,7 +41,7 @@ namespace vefs
     , cavity(std::make_pair(to_point<dim>(parameters.cavity_lower),
                             to_point<dim>(parameters.cavity_upper)))
     , levels(parameters)
-    , fields(triangulation)
+    , fields(triangulation, Rheology<dim>(parameters).has_stress())
     , flow(parameters, triangulation)
     , statistics_file(prepared_directory(parameters.output_directory, comm),
                       comm,
@@ -289,7 +289,7 @@ namespace vefs
       const unsigned int layers =
         std::max<unsigned int>(parameters.extension_layers,
                                std::ceil(expected_cfl) + 2);
-      extend_velocity(fields, known, layers);
+      extend_flow_fields(fields, known, layers);
     }
     return iterations;
   }

@@ -101,7 +101,7 @@ namespace vefs
     : parameters(parameters)
     , comm(triangulation.get_communicator())
     , dof_handler(triangulation)
-    , viscosity(parameters.newtonian_viscosity())
+    , rheology(parameters)
   {
     fe_collection.push_back(FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1));
     fe_collection.push_back(
@@ -266,7 +266,7 @@ namespace vefs
     lumped_pressure_mass = 0;
 
     const double   rho = parameters.density;
-    const double   mu  = viscosity;
+    const double   mu  = rheology.effective_viscosity(tau);
     Tensor<1, dim> gravity;
     for (unsigned int d = 0; d < dim; ++d)
       gravity[d] = parameters.gravity[d];

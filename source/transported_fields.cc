@@ -7,8 +7,10 @@ namespace vefs
 {
   template <int dim>
   TransportedFields<dim>::TransportedFields(
-    const parallel::distributed::Triangulation<dim> &triangulation)
-    : fe(FE_Q<dim>(1), n_components)
+    const parallel::distributed::Triangulation<dim> &triangulation,
+    const bool                                       with_stress)
+    : n_components(with_stress ? max_components : dim + 1)
+    , fe(FE_Q<dim>(1), n_components)
     , dof_handler(triangulation)
   {
   }
@@ -28,7 +30,7 @@ namespace vefs
 
     initialize_vector(fields);
 
-    // FE_Q(1)^(dim+1): the i-th degree of freedom of a vertex belongs to
+    // FE_Q(1)^n_components: the i-th degree of freedom of a vertex belongs to
     // component i, so one vertex carries all fields of one node.
     owned_nodes.clear();
     std::vector<bool> seen(owned_dofs.n_elements(), false);
@@ -64,13 +66,18 @@ namespace vefs
   template <int dim>
   void
   TransportedFields<dim>::interpolate(const Function<dim> &level_set,
-                                      const Function<dim> &velocity)
+                                      const Function<dim> &velocity,
+                                      const Function<dim> *stress)
   {
     for (const auto &node : owned_nodes)
       {
         for (unsigned int d = 0; d < dim; ++d)
           fields(node.dofs[d]) = velocity.value(node.point, d);
         fields(node.dofs[level_set_component]) = level_set.value(node.point);
+        if (has_stress())
+          for (unsigned int i = 0; i < n_stress_components; ++i)
+            fields(node.dofs[first_stress_component + i]) =
+              stress ? stress->value(node.point, i) : 0.;
       }
     finalize();
   }

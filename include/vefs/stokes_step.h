@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <vefs/parameters.h>
+#include <vefs/rheology.h>
 #include <vefs/transported_fields.h>
 
 #include <memory>
@@ -112,7 +113,7 @@ namespace vefs
     BlockVector                         system_rhs;
     BlockVector                         lumped_pressure_mass;
     BlockVector                         solution;
-    double                              viscosity;
+    const Rheology<dim>                 rheology;
   };
 } // namespace vefs
 

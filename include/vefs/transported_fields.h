@@ -1,7 +1,9 @@
 #ifndef vefs_transported_fields_h
 #define vefs_transported_fields_h
 
+#include <deal.II/base/function.h>
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -18,35 +20,82 @@ namespace vefs
 
   /**
    * The fields carried along the characteristics, as continuous Q1 fields on
-   * the whole cavity: the velocity (extended beyond the liquid) and the level
-   * set psi whose negative part is the liquid, phi = H(-psi).
-   * Components: u_0 .. u_{dim-1}, psi.
+   * the whole cavity: the velocity (extended beyond the liquid), the level
+   * set psi whose negative part is the liquid, phi = H(-psi), and, in the
+   * viscoelastic and elastic regimes only, the extra stress sigma (extended
+   * beyond the liquid like the velocity).
+   * Components: u_0 .. u_{dim-1}, psi, then the independent components of
+   * sigma in the order of SymmetricTensor<2, dim>::unrolled_index().
    */
   template <int dim>
   class TransportedFields
   {
   public:
-    static constexpr unsigned int n_components        = dim + 1;
-    static constexpr unsigned int level_set_component = dim;
+    static constexpr unsigned int level_set_component    = dim;
+    static constexpr unsigned int first_stress_component = dim + 1;
+    static constexpr unsigned int n_stress_components    = dim * (dim + 1) / 2;
+    static constexpr unsigned int max_components =
+      dim + 1 + n_stress_components;
     using VectorType = LinearAlgebra::distributed::Vector<double>;
 
     /** A locally owned mesh vertex that carries its own degrees of freedom. */
     struct Node
     {
-      Point<dim>                                   point;
-      std::array<types::global_dof_index, dim + 1> dofs;
+      Point<dim>                                          point;
+      std::array<types::global_dof_index, max_components> dofs;
     };
 
-    explicit TransportedFields(
-      const parallel::distributed::Triangulation<dim> &triangulation);
+    TransportedFields(
+      const parallel::distributed::Triangulation<dim> &triangulation,
+      const bool                                       with_stress);
+
+    bool
+    has_stress() const
+    {
+      return n_components > first_stress_component;
+    }
+
+    /** The velocity stored at @p node. */
+    Tensor<1, dim>
+    velocity(const Node &node) const
+    {
+      Tensor<1, dim> u;
+      for (unsigned int d = 0; d < dim; ++d)
+        u[d] = fields(node.dofs[d]);
+      return u;
+    }
+
+    /** The stress stored at @p node (only if has_stress()). */
+    SymmetricTensor<2, dim>
+    stress(const Node &node) const
+    {
+      SymmetricTensor<2, dim> sigma;
+      for (unsigned int i = 0; i < n_stress_components; ++i)
+        sigma.access_raw_entry(i) =
+          fields(node.dofs[first_stress_component + i]);
+      return sigma;
+    }
+
+    void
+    set_stress(const Node &node, const SymmetricTensor<2, dim> &sigma)
+    {
+      for (unsigned int i = 0; i < n_stress_components; ++i)
+        fields(node.dofs[first_stress_component + i]) =
+          sigma.access_raw_entry(i);
+    }
 
     /** Distribute degrees of freedom after a mesh change; fields are zero. */
     void
     setup_dofs();
 
-    /** Set the fields to the given functions at every node. */
+    /**
+     * Set the fields to the given functions at every node; the stress (if
+     * any) to @p stress, whose components are in unrolled order.
+     */
     void
-    interpolate(const Function<dim> &level_set, const Function<dim> &velocity);
+    interpolate(const Function<dim> &level_set,
+                const Function<dim> &velocity,
+                const Function<dim> *stress = nullptr);
 
     /** Set the velocity to @p velocity (at its current time) at every node. */
     void
@@ -77,6 +126,8 @@ namespace vefs
         &dof_handler);
     }
 
+    /** dim + 1, plus the stress components if there is a stress. */
+    const unsigned int        n_components;
     const MappingQ1<dim>      mapping;
     const FESystem<dim>       fe;
     DoFHandler<dim>           dof_handler;

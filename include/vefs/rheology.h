@@ -1,0 +1,99 @@
+#ifndef vefs_rheology_h
+#define vefs_rheology_h
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <vefs/parameters.h>
+
+namespace vefs
+{
+  using namespace dealii;
+
+  /**
+   * The constitutive law of design section 1 as the diffusion step sees it
+   * at one point, once sigma is eliminated (design section 2, step 3):
+   *   sigma^{n+1}(u) = k [sigma* + tau (grad u sigma* + sigma* grad u^T)
+   *                       + tau (2 eta_p / lambda) eps(u)],
+   *   k = lambda / (lambda + alpha tau),
+   * with sigma* the advected stress. The momentum equation then has the
+   * effective viscosity mu = eta_s + tau eta_p / (lambda + alpha tau), the
+   * geometric term 2 k tau (grad u sigma*) : eps(v) and the right-hand side
+   * -k sigma* : eps(v). A Newtonian liquid has no stress: mu = eta_s + eta_p.
+   */
+  template <int dim>
+  class Rheology
+  {
+  public:
+    explicit Rheology(const Parameters &parameters)
+      : regime(parameters.regime())
+      , eta_s(parameters.solvent_viscosity)
+      , eta_p(parameters.polymer_viscosity)
+      , lambda(parameters.relaxation_time)
+      , alpha(parameters.alpha)
+    {
+    }
+
+    /** Oldroyd-B liquids and elastic solids carry a stress field. */
+    bool
+    has_stress() const
+    {
+      return regime != Regime::newtonian;
+    }
+
+    double
+    effective_viscosity(const double tau) const
+    {
+      return has_stress() ? eta_s + tau * eta_p / (lambda + alpha * tau)
+                          : eta_s + eta_p;
+    }
+
+    /** k: how much of the advected stress survives the step. */
+    double
+    stress_factor(const double tau) const
+    {
+      return has_stress() ? lambda / (lambda + alpha * tau) : 0.;
+    }
+
+    /** sigma^{n+1} from the advected stress and the new velocity gradient. */
+    SymmetricTensor<2, dim>
+    updated_stress(const SymmetricTensor<2, dim> &advected,
+                   const Tensor<2, dim>          &grad_u,
+                   const double                   tau) const
+    {
+      const Tensor<2, dim> stretching = grad_u * advected;
+      return stress_factor(tau) *
+             (advected + tau * symmetrize(stretching + transpose(stretching)) +
+              (tau * 2 * eta_p / lambda) * symmetrize(grad_u));
+    }
+
+    /**
+     * The conformation tensor c = I + lambda sigma / eta_p (Oldroyd-B), or
+     * the left Cauchy-Green tensor B = I + sigma / G with G = eta_p / lambda
+     * (elastic solid): the same expression. Positive definite in the exact
+     * solution.
+     */
+    SymmetricTensor<2, dim>
+    conformation(const SymmetricTensor<2, dim> &sigma) const
+    {
+      return unit_symmetric_tensor<dim>() + (lambda / eta_p) * sigma;
+    }
+
+    /**
+     * Elastic energy density: tr(sigma) / 2, which is G/2 (tr B - d) for the
+     * neo-Hookean solid and the spring energy eta_p/(2 lambda) tr(c - I) of
+     * the Oldroyd-B dumbbells.
+     */
+    static double
+    elastic_energy_density(const SymmetricTensor<2, dim> &sigma)
+    {
+      return 0.5 * trace(sigma);
+    }
+
+  private:
+    const Regime regime;
+    const double eta_s, eta_p, lambda, alpha;
+  };
+} // namespace vefs
+
+#endif
