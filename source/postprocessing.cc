@@ -84,48 +84,76 @@ namespace vefs
 
   template <int dim>
   StatisticsFile<dim>::StatisticsFile(const std::string &directory,
-                                      const MPI_Comm     comm,
-                                      const bool         with_shape_error)
-    : with_shape_error(with_shape_error)
+                                      const MPI_Comm     comm)
   {
-    if (Utilities::MPI::this_mpi_process(comm) != 0)
-      return;
-    file.open(directory + "/statistics");
-    AssertThrow(file, ExcMessage("Cannot write " + directory + "/statistics"));
-    file << "# vefs statistics, one row per time step, SI units.\n"
-         << "# volume: liquid volume from phi; volume_change: (volume - "
-            "initial volume - inflow through the walls) / initial volume; "
-            "floor_extent: largest x of liquid on the floor; "
-            "wall_height: highest liquid on the x- wall.\n"
-         << "# step time tau cfl volume volume_change liquid_cell_volume "
-            "centroid_x centroid_y"
-         << (dim == 3 ? " centroid_z" : "")
-         << " kinetic_energy potential_energy elastic_energy max_velocity "
-            "floor_extent wall_height cells liquid_cells dofs "
-            "linear_iterations wall_time"
-         << (with_shape_error ? " shape_error interface_thickness" : "")
-         << '\n';
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        file.open(directory + "/statistics");
+        AssertThrow(file,
+                    ExcMessage("Cannot write " + directory + "/statistics"));
+      }
+    using S = StepStatistics<dim>;
+    add_column("step", [](const S &s) { return s.step; });
+    add_column("time", [](const S &s) { return s.time; });
+    add_column("tau", [](const S &s) { return s.tau; });
+    add_column("cfl", [](const S &s) { return s.cfl; });
+    add_column("volume", [](const S &s) { return s.volume; });
+    add_column("volume_change", [](const S &s) { return s.volume_change; });
+    add_column("liquid_cell_volume",
+               [](const S &s) { return s.liquid_cell_volume; });
+    for (unsigned int d = 0; d < dim; ++d)
+      add_column(std::string("centroid_") + "xyz"[d],
+                 [d](const S &s) { return s.centroid[d]; });
+    add_column("kinetic_energy", [](const S &s) { return s.kinetic_energy; });
+    add_column("potential_energy",
+               [](const S &s) { return s.potential_energy; });
+    add_column("elastic_energy", [](const S &s) { return s.elastic_energy; });
+    add_column("max_velocity", [](const S &s) { return s.max_velocity; });
+    add_column("floor_extent", [](const S &s) { return s.floor_extent; });
+    add_column("wall_height", [](const S &s) { return s.wall_height; });
+    add_column("cells", [](const S &s) { return s.cells; });
+    add_column("liquid_cells", [](const S &s) { return s.liquid_cells; });
+    add_column("dofs", [](const S &s) { return s.dofs; });
+    add_column("linear_iterations",
+               [](const S &s) { return s.linear_iterations; });
+    add_column(
+      "wall_time",
+      [](const S &s) { return s.wall_time; },
+      4);
   }
 
   template <int dim>
   void
-  StatisticsFile<dim>::write(const StepStatistics<dim> &r)
+  StatisticsFile<dim>::add_column(const std::string &name,
+                                  const Reader      &reader,
+                                  const unsigned int precision)
+  {
+    Assert(!header_written, ExcMessage("Columns come before the first row."));
+    columns.push_back({name, reader, precision});
+  }
+
+  template <int dim>
+  void
+  StatisticsFile<dim>::write(const StepStatistics<dim> &row)
   {
     if (!file.is_open())
       return;
-    file << r.step << ' ' << std::setprecision(10) << r.time << ' ' << r.tau
-         << ' ' << r.cfl << ' ' << r.volume << ' ' << r.volume_change << ' '
-         << r.liquid_cell_volume;
-    for (unsigned int d = 0; d < dim; ++d)
-      file << ' ' << r.centroid[d];
-    file << ' ' << r.kinetic_energy << ' ' << r.potential_energy << ' '
-         << r.elastic_energy << ' ' << r.max_velocity << ' ' << r.floor_extent
-         << ' ' << r.wall_height << ' ' << r.cells << ' ' << r.liquid_cells
-         << ' ' << r.dofs << ' ' << r.linear_iterations << ' '
-         << std::setprecision(4) << r.wall_time;
-    if (with_shape_error)
-      file << ' ' << std::setprecision(10) << r.shape_error << ' '
-           << r.interface_thickness;
+    if (!header_written)
+      {
+        file << "# vefs statistics, one row per time step, SI units.\n"
+             << "# volume: liquid volume from phi; volume_change: (volume - "
+                "initial volume - inflow through the walls) / initial volume; "
+                "floor_extent: largest x of liquid on the floor; "
+                "wall_height: highest liquid on the x- wall.\n"
+             << "#";
+        for (const auto &column : columns)
+          file << ' ' << column.name;
+        file << '\n';
+        header_written = true;
+      }
+    for (unsigned int c = 0; c < columns.size(); ++c)
+      file << (c == 0 ? "" : " ") << std::setprecision(columns[c].precision)
+           << columns[c].reader(row);
     file << std::endl;
   }
 

@@ -44,14 +44,20 @@ namespace vefs
     , fields(triangulation, Rheology<dim>(parameters).has_stress())
     , flow(parameters, triangulation)
     , statistics_file(prepared_directory(parameters.output_directory, comm),
-                      comm,
-                      !parameters.exact_final_level_set.empty())
+                      comm)
     , visualization(parameters.output_directory)
   {
     if (parameters.velocity_is_prescribed())
       prescribed_velocity = make_prescribed_velocity<dim>(parameters);
     if (!parameters.exact_final_level_set.empty())
-      exact_final_level_set = make_exact_final_level_set<dim>(parameters);
+      {
+        exact_final_level_set = make_exact_final_level_set<dim>(parameters);
+        statistics_file.add_column("shape_error",
+                                   [](const auto &s) { return s.shape_error; });
+        statistics_file.add_column("interface_thickness", [](const auto &s) {
+          return s.interface_thickness;
+        });
+      }
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::ofstream file(parameters.output_directory + "/parameters.prm");

@@ -7,6 +7,7 @@
 #include <vefs/transported_fields.h>
 
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -60,21 +61,40 @@ namespace vefs
                const double                  expected_volume,
                StepStatistics<dim>          &statistics);
 
-  /** The `statistics` table, one row a step, written by rank 0. */
+  /**
+   * The `statistics` table, one row a step, written by rank 0. Each column
+   * is registered once, with its name and how to read it from a row; the
+   * header follows from the registered columns.
+   */
   template <int dim>
   class StatisticsFile
   {
   public:
-    StatisticsFile(const std::string &directory,
-                   const MPI_Comm     comm,
-                   const bool         with_shape_error);
+    using Reader = std::function<double(const StepStatistics<dim> &)>;
+
+    /** The file, with the columns every scene has. */
+    StatisticsFile(const std::string &directory, const MPI_Comm comm);
+
+    /** Add a column; before the first row only. */
+    void
+    add_column(const std::string &name,
+               const Reader      &reader,
+               const unsigned int precision = 10);
 
     void
     write(const StepStatistics<dim> &row);
 
   private:
-    const bool    with_shape_error;
-    std::ofstream file;
+    struct Column
+    {
+      std::string  name;
+      Reader       reader;
+      unsigned int precision;
+    };
+
+    std::vector<Column> columns;
+    bool                header_written = false;
+    std::ofstream       file;
   };
 } // namespace vefs
 
