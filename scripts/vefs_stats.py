@@ -13,13 +13,28 @@ read_csv_reference(path)
 
 interpolate(ts, ys, t)
     Piecewise linear interpolation of ys(ts) at t; None outside [ts[0], ts[-1]].
+
+read_parameters(path_or_dir)
+    Reads the ``parameters.prm`` a vefs run writes into its output directory
+    (deal.II ParameterHandler PRM format; any input prm file works too).
+    Returns a dict 'Subsection/Entry' -> value string ('Entry' at the top
+    level, 'A/B/Entry' for nested subsections).  parameter(), parameter_float()
+    and parameter_floats() get one entry with a readable error message.
+
+parabolic_vertex(p0, p1, p2)
+    (t, y) of the vertex of the parabola through three samples (t, y).
+
+zero_crossings(ts, ys)
+    Times where ys(ts) changes sign, by linear interpolation between rows.
 """
 
 import bisect
 import os
 
 __all__ = ["read_statistics", "read_csv_reference", "interpolate",
-           "column", "statistics_path"]
+           "column", "statistics_path", "parameters_path", "read_parameters",
+           "parameter", "parameter_float", "parameter_floats",
+           "parabolic_vertex", "zero_crossings"]
 
 
 def statistics_path(path_or_dir):
@@ -150,6 +165,174 @@ def interpolate(ts, ys, t):
         return y1
     w = (t - t0) / (t1 - t0)
     return (1.0 - w) * y0 + w * y1
+
+
+def parabolic_vertex(p0, p1, p2):
+    """(t, y) of the vertex of the parabola through the samples p0, p1, p2
+    (pairs (t, y) with t0 < t1 < t2, not necessarily equally spaced).  The
+    vertex time is clamped to [t0, t2] (it lies inside when p1 is a local
+    extremum of the samples); if the three points are collinear, p1 is
+    returned."""
+    (t0, y0), (t1, y1), (t2, y2) = p0, p1, p2
+    # y = y1 + c1 (t - t1) + c2 (t - t1)^2 through the three points
+    d0, d2 = t0 - t1, t2 - t1
+    if d0 == 0 or d2 == 0 or d0 == d2:
+        return (t1, y1)
+    s0, s2 = (y0 - y1) / d0, (y2 - y1) / d2
+    c2 = (s2 - s0) / (d2 - d0)
+    c1 = s0 - c2 * d0
+    if c2 == 0:
+        return (t1, y1)
+    dt = -c1 / (2.0 * c2)
+    dt = min(max(dt, d0), d2)
+    return (t1 + dt, y1 + c1 * dt + c2 * dt * dt)
+
+
+def zero_crossings(ts, ys):
+    """Times where the samples ys(ts) change sign, by linear interpolation
+    between the two rows around each change, as (t, direction) with
+    direction +1 (upward) or -1 (downward).  A sample that is exactly 0
+    counts as a crossing only if its neighbours on both sides (the nearest
+    non-zero samples) have opposite signs; it is then taken at the
+    middle of the run of zero samples."""
+    result = []
+    last = None  # index of the last non-zero sample
+    for i, y in enumerate(ys):
+        if y == 0:
+            continue
+        if last is not None and (ys[last] > 0) != (y > 0):
+            if last == i - 1:
+                t0, t1, y0, y1 = ts[last], ts[i], ys[last], y
+                t = t0 - y0 * (t1 - t0) / (y1 - y0)
+            else:
+                t = 0.5 * (ts[last + 1] + ts[i - 1])
+            result.append((t, 1 if y > 0 else -1))
+        last = i
+    return result
+
+
+# --------------------------------------------------------------------------
+# parameters.prm
+# --------------------------------------------------------------------------
+
+def parameters_path(path_or_dir):
+    """Path of parameters.prm given the file itself or its directory."""
+    if os.path.isdir(path_or_dir):
+        return os.path.join(path_or_dir, "parameters.prm")
+    return path_or_dir
+
+
+def _prm_strip_comment(line):
+    """Line without its '#' comment; '\\#' stands for a literal '#'."""
+    out = []
+    i = 0
+    while i < len(line):
+        c = line[i]
+        if c == "\\" and i + 1 < len(line) and line[i + 1] == "#":
+            out.append("#")
+            i += 2
+            continue
+        if c == "#":
+            break
+        out.append(c)
+        i += 1
+    return "".join(out)
+
+
+def read_parameters(path_or_dir):
+    """Read a deal.II ParameterHandler file in PRM format into a dict
+    'Subsection/Entry' -> value (a string, surrounding blanks removed).
+
+    Understands what ParameterHandler::print_parameters(..., PRM) writes and
+    what it reads: '#' comments ('\\#' is a literal '#'), lines continued
+    by a trailing backslash, 'subsection NAME' ... 'end' (nested), and
+    'set NAME = VALUE' (split at the first '=').  Runs of blanks in
+    subsection and entry names are reduced to one; names are kept as
+    written otherwise (case-sensitive, like deal.II).  A later 'set' of the
+    same entry wins.  'include' lines are not followed.  Raises ValueError
+    with the line number on anything else (unbalanced 'end', a line that
+    is none of the above, an unclosed subsection)."""
+    path = parameters_path(path_or_dir)
+    with open(path) as f:
+        physical = f.read().splitlines()
+
+    result = {}
+    stack = []
+    i = 0
+    while i < len(physical):
+        number = i + 1
+        line = _prm_strip_comment(physical[i])
+        while line.rstrip().endswith("\\") and i + 1 < len(physical):
+            i += 1
+            line = line.rstrip()[:-1] + " " + \
+                _prm_strip_comment(physical[i]).strip()
+        i += 1
+        text = line.strip()
+        if not text:
+            continue
+        words = text.split(None, 1)
+        keyword = words[0].lower()
+        if keyword == "subsection":
+            if len(words) < 2:
+                raise ValueError("%s:%d: 'subsection' without a name"
+                                 % (path, number))
+            stack.append(" ".join(words[1].split()))
+        elif keyword == "end" and len(words) == 1:
+            if not stack:
+                raise ValueError("%s:%d: 'end' without a subsection"
+                                 % (path, number))
+            stack.pop()
+        elif keyword == "set":
+            rest = words[1] if len(words) > 1 else ""
+            if "=" not in rest:
+                raise ValueError("%s:%d: 'set' without '=': %s"
+                                 % (path, number, text))
+            name, value = rest.split("=", 1)
+            name = " ".join(name.split())
+            if not name:
+                raise ValueError("%s:%d: 'set' without a name"
+                                 % (path, number))
+            result["/".join(stack + [name])] = value.strip()
+        elif keyword == "include":
+            continue
+        else:
+            raise ValueError("%s:%d: not a PRM line: %s" % (path, number,
+                                                            text))
+    if stack:
+        raise ValueError("%s: subsection '%s' not closed by 'end'"
+                         % (path, "/".join(stack)))
+    return result
+
+
+def parameter(prm, key, source="parameters.prm"):
+    """prm[key] with a readable error message if the entry is missing."""
+    try:
+        return prm[key]
+    except KeyError:
+        raise KeyError("entry '%s' not found in %s" % (key, source))
+
+
+def parameter_float(prm, key, source="parameters.prm"):
+    """The entry key as a float (ValueError if it is not a number)."""
+    value = parameter(prm, key, source)
+    try:
+        return float(value)
+    except ValueError:
+        raise ValueError("entry '%s' in %s is not a number: '%s'"
+                         % (key, source, value))
+
+
+def parameter_floats(prm, key, source="parameters.prm"):
+    """The entry key as a list of floats: a comma separated list (as
+    Gravity, the cavity corners or the probe point), or [] if empty."""
+    value = parameter(prm, key, source)
+    if not value.strip():
+        return []
+    try:
+        return [float(x) for x in value.split(",")]
+    except ValueError:
+        raise ValueError("entry '%s' in %s is not a comma separated list of "
+                         "numbers: '%s'" % (key, source, value))
 
 
 if __name__ == "__main__":

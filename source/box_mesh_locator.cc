@@ -20,9 +20,13 @@ namespace vefs
   BoxMeshLocator<dim>::BoxMeshLocator(
     const Triangulation<dim>        &triangulation,
     const BoundingBox<dim>          &cavity,
-    const std::vector<unsigned int> &subdivisions)
+    const std::vector<unsigned int> &subdivisions,
+    const std::vector<unsigned int> &periodic_directions)
     : cavity(cavity)
   {
+    periodic.fill(false);
+    for (const unsigned int d : periodic_directions)
+      periodic[d] = true;
     unsigned int n_cells = 1;
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -65,6 +69,28 @@ namespace vefs
         cell = cell->child(child);
       }
     return cell;
+  }
+
+  template <int dim>
+  Point<dim>
+  BoxMeshLocator<dim>::fold_into_cavity(const Point<dim> &p) const
+  {
+    Point<dim> q;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double lower = cavity.lower_bound(d);
+        const double size  = cavity.side_length(d);
+        if (periodic[d])
+          q[d] =
+            lower + (p[d] - lower) - size * std::floor((p[d] - lower) / size);
+        else
+          {
+            const double margin = 1e-10 * size;
+            q[d] =
+              std::min(std::max(p[d], lower + margin), lower + size - margin);
+          }
+      }
+    return q;
   }
 
   template <int dim>

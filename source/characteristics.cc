@@ -7,21 +7,6 @@ namespace vefs
 {
   namespace
   {
-    /** Keep a point inside the cavity, a hair away from its walls. */
-    template <int dim>
-    Point<dim>
-    clamp_to(const BoundingBox<dim> &box, const Point<dim> &p)
-    {
-      Point<dim> q;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const double margin = 1e-10 * box.side_length(d);
-          q[d] = std::min(std::max(p[d], box.lower_bound(d) + margin),
-                          box.upper_bound(d) - margin);
-        }
-      return q;
-    }
-
     /** Values of all components of the fields at one point. */
     template <int dim>
     using FieldValues =
@@ -110,16 +95,14 @@ namespace vefs
   void
   advect_along_characteristics(TransportedFields<dim>    &fields,
                                const double               tau,
-                               const BoundingBox<dim>    &cavity,
                                const BoxMeshLocator<dim> &locator)
   {
     const auto &nodes = fields.nodes();
 
     std::vector<Point<dim>> points(nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
-      points[i] =
-        clamp_to(cavity,
-                 nodes[i].point - 0.5 * tau * fields.velocity(nodes[i]));
+      points[i] = locator.fold_into_cavity(
+        nodes[i].point - 0.5 * tau * fields.velocity(nodes[i]));
     const auto at_midpoints = evaluate_at(points, fields, locator);
 
     for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -127,7 +110,7 @@ namespace vefs
         Tensor<1, dim> u;
         for (unsigned int d = 0; d < dim; ++d)
           u[d] = at_midpoints[i][d];
-        points[i] = clamp_to(cavity, nodes[i].point - tau * u);
+        points[i] = locator.fold_into_cavity(nodes[i].point - tau * u);
       }
     const auto at_feet = evaluate_at(points, fields, locator);
 
@@ -140,11 +123,9 @@ namespace vefs
   template void
   advect_along_characteristics<2>(TransportedFields<2> &,
                                   const double,
-                                  const BoundingBox<2> &,
                                   const BoxMeshLocator<2> &);
   template void
   advect_along_characteristics<3>(TransportedFields<3> &,
                                   const double,
-                                  const BoundingBox<3> &,
                                   const BoxMeshLocator<3> &);
 } // namespace vefs

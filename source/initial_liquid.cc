@@ -108,6 +108,15 @@ namespace vefs
 
   template <int dim>
   std::unique_ptr<Function<dim>>
+  make_initial_stress(const Parameters &parameters)
+  {
+    if (parameters.initial_stress.empty())
+      return nullptr;
+    return parse_function<dim>(parameters.initial_stress, dim * (dim + 1) / 2);
+  }
+
+  template <int dim>
+  std::unique_ptr<Function<dim>>
   make_prescribed_velocity(const Parameters &parameters)
   {
     return parse_function<dim>(parameters.prescribed_velocity, dim);
@@ -137,6 +146,10 @@ namespace vefs
   make_initial_velocity<2>(const Parameters &);
   template std::unique_ptr<Function<3>>
   make_initial_velocity<3>(const Parameters &);
+  template std::unique_ptr<Function<2>>
+  make_initial_stress<2>(const Parameters &);
+  template std::unique_ptr<Function<3>>
+  make_initial_stress<3>(const Parameters &);
   template std::unique_ptr<Function<2>>
   make_prescribed_velocity<2>(const Parameters &);
   template std::unique_ptr<Function<3>>

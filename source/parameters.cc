@@ -40,7 +40,8 @@ namespace vefs
       {"no-slip", WallType::no_slip},
       {"slip", WallType::slip},
       {"open", WallType::open},
-      {"velocity", WallType::velocity}};
+      {"velocity", WallType::velocity},
+      {"periodic", WallType::periodic}};
 
     std::string
     variable_names(const unsigned int dim)
@@ -102,6 +103,10 @@ namespace vefs
                                 dim,
                                 "Walls/" + wall_names[w] + " velocity");
       check_expression<dim>(p.initial_velocity, dim, "Initial liquid/Velocity");
+      if (!p.initial_stress.empty())
+        check_expression<dim>(p.initial_stress,
+                              dim * (dim + 1) / 2,
+                              "Initial liquid/Stress");
       if (p.initial_shape == "expression")
         check_expression<dim>(p.level_set_expression,
                               1,
@@ -184,13 +189,16 @@ namespace vefs
           prm.declare_entry(
             wall_names[w],
             defaults[w],
-            Patterns::Selection("no-slip|slip|open|velocity"),
+            Patterns::Selection("no-slip|slip|open|velocity|periodic"),
             "Condition on the cavity wall " + wall_names[w] + " (boundary id " +
               std::to_string(w) +
               "): no-slip (u = 0), slip (u.n = 0, no tangential "
-              "stress), open (zero traction) or velocity (u given by the "
+              "stress), open (zero traction), velocity (u given by the "
               "entry '" +
-              wall_names[w] + " velocity'). z walls are used in 3D only.");
+              wall_names[w] +
+              " velocity') or periodic (the opposite wall must be "
+              "periodic too: the liquid leaving through one wall enters "
+              "through the other). z walls are used in 3D only.");
           prm.declare_entry(wall_names[w] + " velocity",
                             "0; 0",
                             Patterns::Anything(),
@@ -215,17 +223,27 @@ namespace vefs
       prm.declare_entry("Polymer viscosity",
                         "0",
                         Patterns::Double(),
-                        "Polymer viscosity eta_p (Pa s), non-negative.");
+                        "Polymer viscosity eta_p (Pa s), non-negative; "
+                        "positive in the Oldroyd-B and elastic regimes. In "
+                        "the elastic regime the shear modulus is "
+                        "G = eta_p / lambda.");
       prm.declare_entry("Relaxation time",
                         "0",
                         Patterns::Double(),
                         "Relaxation time lambda (s). Zero selects the "
-                        "Newtonian regime with viscosity eta_s + eta_p.");
-      prm.declare_entry("Alpha",
-                        "1",
-                        Patterns::Integer(0, 1),
-                        "Factor of sigma in the constitutive law: 1 for "
-                        "liquids, 0 for the elastic-solid limit.");
+                        "Newtonian regime with viscosity eta_s + eta_p; "
+                        "positive: the Oldroyd-B liquid (Alpha = 1) or the "
+                        "elastic solid (Alpha = 0).");
+      prm.declare_entry(
+        "Alpha",
+        "1",
+        Patterns::Integer(0, 1),
+        "Factor of sigma in the constitutive law alpha sigma + lambda "
+        "(upper-convected derivative of sigma) = 2 eta_p eps(u): 1 for "
+        "liquids, 0 for the elastic limit, an incompressible neo-Hookean "
+        "solid with sigma = G (B - I), G = eta_p / lambda (needs lambda > 0 "
+        "and eta_p > 0). A positive solvent viscosity with Alpha = 0 adds a "
+        "viscous stress 2 eta_s eps(u): a Kelvin-Voigt solid.");
     }
     prm.leave_subsection();
 
@@ -266,6 +284,13 @@ namespace vefs
                         "Initial velocity (m/s): one muParser expression "
                         "per component, separated by ';', in x, y, (z). All "
                         "expressions know the constant pi.");
+      prm.declare_entry("Stress",
+                        "",
+                        Patterns::Anything(),
+                        "Initial extra stress sigma (Pa) in the Oldroyd-B and "
+                        "elastic regimes: muParser expressions in x, y, (z) "
+                        "for the components xx; yy; xy (2D) or xx; yy; zz; "
+                        "xy; xz; yz (3D). Empty: zero.");
     }
     prm.leave_subsection();
 
@@ -365,6 +390,17 @@ namespace vefs
     }
     prm.leave_subsection();
 
+    prm.enter_subsection("Postprocess");
+    {
+      prm.declare_entry("Probe point",
+                        "",
+                        Patterns::List(Patterns::Double(), 0, 3),
+                        "If not empty, a point (m) of the cavity where the "
+                        "velocity is written to the statistics every step "
+                        "(columns probe_u_x, probe_u_y, probe_u_z).");
+    }
+    prm.leave_subsection();
+
     prm.enter_subsection("Output");
     {
       prm.declare_entry("Interval",
@@ -428,6 +464,7 @@ namespace vefs
     ball_radius          = prm.get_double("Ball radius");
     level_set_expression = prm.get("Level set expression");
     initial_velocity     = prm.get("Velocity");
+    initial_stress       = prm.get("Stress");
     prm.leave_subsection();
 
     prm.enter_subsection("Mesh refinement");
@@ -452,12 +489,26 @@ namespace vefs
     exact_final_level_set = prm.get("Exact final level set");
     prm.leave_subsection();
 
+    prm.enter_subsection("Postprocess");
+    probe_point = to_doubles(prm.get("Probe point"));
+    prm.leave_subsection();
+
     prm.enter_subsection("Output");
     output_interval = prm.get_integer("Interval");
     verbose         = prm.get_bool("Verbose");
     prm.leave_subsection();
 
     check();
+  }
+
+  std::vector<unsigned int>
+  Parameters::periodic_directions() const
+  {
+    std::vector<unsigned int> directions;
+    for (unsigned int d = 0; d < dimension; ++d)
+      if (wall_type[2 * d] == WallType::periodic)
+        directions.push_back(d);
+    return directions;
   }
 
   Regime
@@ -510,11 +561,35 @@ namespace vefs
     require(newtonian_viscosity() > 0 || relaxation_time > 0,
             "Material/Solvent viscosity",
             "a Newtonian liquid needs eta_s + eta_p > 0");
-    require(regime() == Regime::newtonian,
-            "Material/Relaxation time",
-            "a positive relaxation time selects the Oldroyd-B or elastic "
-            "regime, which this version of vefs does not implement yet; "
-            "allowed: 0 (Newtonian)");
+    require(regime() == Regime::newtonian || polymer_viscosity > 0,
+            "Material/Polymer viscosity",
+            std::string(regime() == Regime::elastic_solid
+                          ? "alpha = 0 (elastic solid)"
+                          : "a positive relaxation time (Oldroyd-B)") +
+              " needs a positive polymer viscosity (the shear modulus is "
+              "eta_p / lambda)");
+    require(regime() != Regime::newtonian || initial_stress.empty(),
+            "Initial liquid/Stress",
+            "a Newtonian liquid (relaxation time 0) has no extra stress; "
+            "leave it empty or give a positive relaxation time");
+    require(!velocity_is_prescribed() || initial_stress.empty(),
+            "Initial liquid/Stress",
+            "with a prescribed velocity the flow (and its stress) is not "
+            "solved; leave it empty");
+    for (unsigned int d = 0; d < dimension; ++d)
+      require((wall_type[2 * d] == WallType::periodic) ==
+                (wall_type[2 * d + 1] == WallType::periodic),
+              "Walls/" + wall_names[2 * d + 1],
+              "walls " + wall_names[2 * d] + " and " + wall_names[2 * d + 1] +
+                " are periodic together or not at all");
+    require(probe_point.empty() || probe_point.size() == dimension,
+            "Postprocess/Probe point",
+            "needs " + dim_text + " comma-separated numbers or nothing");
+    for (unsigned int d = 0; d < probe_point.size(); ++d)
+      require(probe_point[d] >= cavity_lower[d] &&
+                probe_point[d] <= cavity_upper[d],
+              "Postprocess/Probe point",
+              "must lie inside the cavity");
 
     if (initial_shape == "box")
       {

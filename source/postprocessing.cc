@@ -83,6 +83,33 @@ namespace vefs
   }
 
   template <int dim>
+  Tensor<1, dim>
+  probe_velocity(const TransportedFields<dim> &fields,
+                 const BoxMeshLocator<dim>    &locator,
+                 const Point<dim>             &point)
+  {
+    // Exactly one rank owns the cell the locator finds.
+    Tensor<1, dim> u;
+    const auto     cell = locator.locate(point);
+    if (cell->is_locally_owned())
+      {
+        const Point<dim> xi = BoxMeshLocator<dim>::unit_point(cell, point);
+        const auto       dof_cell = fields.cell_of(cell);
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            double weight = 1;
+            for (unsigned int d = 0; d < dim; ++d)
+              weight *= ((v >> d) & 1) ? xi[d] : 1 - xi[d];
+            for (unsigned int d = 0; d < dim; ++d)
+              u[d] += weight * fields.fields(dof_cell->vertex_dof_index(v, d));
+          }
+      }
+    return Utilities::MPI::sum(
+      u,
+      fields.dof_handler.get_triangulation().get_communicator());
+  }
+
+  template <int dim>
   StatisticsFile<dim>::StatisticsFile(const std::string &directory,
                                       const MPI_Comm     comm)
   {
@@ -171,6 +198,14 @@ namespace vefs
                   const double,
                   const double,
                   StepStatistics<3> &);
+  template Tensor<1, 2>
+  probe_velocity<2>(const TransportedFields<2> &,
+                    const BoxMeshLocator<2> &,
+                    const Point<2> &);
+  template Tensor<1, 3>
+  probe_velocity<3>(const TransportedFields<3> &,
+                    const BoxMeshLocator<3> &,
+                    const Point<3> &);
   template class StatisticsFile<2>;
   template class StatisticsFile<3>;
 } // namespace vefs

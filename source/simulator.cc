@@ -1,4 +1,5 @@
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <vefs/characteristics.h>
 #include <vefs/field_extension.h>
@@ -6,6 +7,7 @@
 #include <vefs/initial_liquid.h>
 #include <vefs/redistancing.h>
 #include <vefs/simulator.h>
+#include <vefs/stress.h>
 
 #include <filesystem>
 #include <iomanip>
@@ -29,6 +31,7 @@ namespace vefs
   Simulator<dim>::Simulator(const Parameters       &parameters,
                             const ParameterHandler &prm)
     : parameters(parameters)
+    , rheology(parameters)
     , comm(MPI_COMM_WORLD)
     , pcout(std::cout,
             parameters.verbose && Utilities::MPI::this_mpi_process(comm) == 0)
@@ -41,7 +44,9 @@ namespace vefs
     , cavity(std::make_pair(to_point<dim>(parameters.cavity_lower),
                             to_point<dim>(parameters.cavity_upper)))
     , levels(parameters)
-    , fields(triangulation, Rheology<dim>(parameters).has_stress())
+    , fields(triangulation,
+             rheology.has_stress(),
+             parameters.periodic_directions())
     , flow(parameters, triangulation)
     , statistics_file(prepared_directory(parameters.output_directory, comm),
                       comm)
@@ -58,6 +63,23 @@ namespace vefs
           return s.interface_thickness;
         });
       }
+    if (rheology.has_stress())
+      {
+        statistics_file.add_column("min_conformation_eigenvalue",
+                                   [](const auto &s) {
+                                     return s.min_conformation_eigenvalue;
+                                   });
+        statistics_file.add_column("non_positive_conformation_points",
+                                   [](const auto &s) {
+                                     return s.non_positive_conformation_points;
+                                   });
+      }
+    if (!parameters.probe_point.empty())
+      for (unsigned int d = 0; d < dim; ++d)
+        statistics_file.add_column(std::string("probe_u_") + "xyz"[d],
+                                   [d](const auto &s) {
+                                     return s.probe_velocity[d];
+                                   });
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::ofstream file(parameters.output_directory + "/parameters.prm");
@@ -79,6 +101,18 @@ namespace vefs
       cavity.get_boundary_points().first,
       cavity.get_boundary_points().second,
       true);
+    for (const unsigned int d : parameters.periodic_directions())
+      {
+        std::vector<GridTools::PeriodicFacePair<
+          typename parallel::distributed::Triangulation<dim>::cell_iterator>>
+          pairs;
+        GridTools::collect_periodic_faces(triangulation,
+                                          2 * d,
+                                          2 * d + 1,
+                                          d,
+                                          pairs);
+        triangulation.add_periodicity(pairs);
+      }
     // p4est balances the work: a cell with liquid costs the flow solve, an
     // empty one only the transport.
     triangulation.signals.weight.connect(
@@ -86,9 +120,11 @@ namespace vefs
          const typename Triangulation<dim>::CellStatus) -> unsigned int {
         return cell->material_id() == liquid_material_id ? 4 : 1;
       });
-    locator = std::make_unique<BoxMeshLocator<dim>>(triangulation,
-                                                    cavity,
-                                                    subdivisions);
+    locator =
+      std::make_unique<BoxMeshLocator<dim>>(triangulation,
+                                            cavity,
+                                            subdivisions,
+                                            parameters.periodic_directions());
     triangulation.refine_global(parameters.min_level);
   }
 
@@ -98,10 +134,11 @@ namespace vefs
   {
     const auto level_set = make_initial_level_set<dim>(parameters);
     const auto velocity  = make_initial_velocity<dim>(parameters);
+    const auto stress    = make_initial_stress<dim>(parameters);
     fields.setup_dofs();
     // Refine toward the initial surface, evaluating it exactly on each mesh.
     do
-      fields.interpolate(*level_set, *velocity);
+      fields.interpolate(*level_set, *velocity, stress.get());
     while (adapt_mesh(triangulation, fields, levels, 1));
     if (prescribed_velocity)
       {
@@ -187,12 +224,9 @@ namespace vefs
   void
   Simulator<dim>::run()
   {
-    pcout << "vefs: " << dim << "D "
-          << (prescribed_velocity ? "transport with a prescribed velocity"
-                                  : "Newtonian free-surface flow")
-          << " on " << Utilities::MPI::n_mpi_processes(comm)
-          << " MPI rank(s), output in " << parameters.output_directory << "/"
-          << std::endl;
+    pcout << "vefs: " << dim << "D " << description() << " on "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s), output in "
+          << parameters.output_directory << "/" << std::endl;
     {
       TimerOutput::Scope scope(timer, "initial state");
       make_cavity();
@@ -229,7 +263,7 @@ namespace vefs
               prescribed_velocity->set_time(statistics.time + tau / 2);
               fields.set_velocity(*prescribed_velocity);
             }
-          advect_along_characteristics(fields, tau, cavity, *locator);
+          advect_along_characteristics(fields, tau, *locator);
           if (parameters.redistancing_interval > 0 &&
               statistics.step % parameters.redistancing_interval == 0)
             redistance(fields);
@@ -292,6 +326,11 @@ namespace vefs
       typename TransportedFields<dim>::VectorType known;
       fields.initialize_vector(known);
       flow.copy_velocity_to(fields, known);
+      if (rheology.has_stress())
+        {
+          TimerOutput::Scope scope(timer, "4 stress update");
+          update_stress(fields, liquid_fraction, rheology, tau);
+        }
       const unsigned int layers =
         std::max<unsigned int>(parameters.extension_layers,
                                std::ceil(expected_cfl) + 2);
@@ -314,6 +353,21 @@ namespace vefs
                    expected_volume,
                    statistics);
       statistics.dofs = flow.n_dofs();
+      if (rheology.has_stress())
+        {
+          const StressMeasure stress =
+            measure_stress(fields, liquid_fraction, rheology);
+          statistics.elastic_energy = stress.elastic_energy;
+          statistics.min_conformation_eigenvalue =
+            stress.min_conformation_eigenvalue;
+          statistics.non_positive_conformation_points =
+            stress.non_positive_points;
+        }
+      if (!parameters.probe_point.empty())
+        statistics.probe_velocity =
+          probe_velocity(fields,
+                         *locator,
+                         to_point<dim>(parameters.probe_point));
       if (exact_final_level_set)
         {
           // Only the final shape is known exactly.
@@ -352,6 +406,26 @@ namespace vefs
           << std::setw(7) << statistics.cells << "  " << std::setprecision(3)
           << per_step << " s/step  ~" << std::setprecision(3) << left
           << " s left" << std::endl;
+  }
+
+  template <int dim>
+  std::string
+  Simulator<dim>::description() const
+  {
+    if (prescribed_velocity)
+      return "transport with a prescribed velocity";
+    switch (parameters.regime())
+      {
+        case Regime::newtonian:
+          return "Newtonian free-surface flow";
+        case Regime::oldroyd_b:
+          return "Oldroyd-B free-surface flow";
+        case Regime::elastic_solid:
+          return parameters.solvent_viscosity > 0
+                   ? "Kelvin-Voigt elastic solid (neo-Hookean + viscous)"
+                   : "neo-Hookean elastic solid";
+      }
+    return "";
   }
 
   template class Simulator<2>;

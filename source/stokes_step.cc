@@ -162,6 +162,12 @@ namespace vefs
     constraints.clear();
     constraints.reinit(relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    for (const unsigned int d : parameters.periodic_directions())
+      DoFTools::make_periodicity_constraints(dof_handler,
+                                             2 * d,
+                                             2 * d + 1,
+                                             d,
+                                             constraints);
     make_wall_constraints(time);
     constraints.close();
 
@@ -250,6 +256,7 @@ namespace vefs
                 break;
               }
             case WallType::open:
+            case WallType::periodic:
               break;
           }
       }
@@ -288,14 +295,18 @@ namespace vefs
     FEValues<dim>         advected(fields.mapping,
                            fields.fe,
                            quadrature,
-                           update_values);
+                           update_values | update_gradients);
     FEFaceValues<dim>     face_values(fe_collection[liquid_index],
                                   face_quadrature,
                                   update_values | update_JxW_values);
 
-    const FEValuesExtractors::Vector velocity(0);
-    const FEValuesExtractors::Scalar pressure(dim);
-    const unsigned int               dofs_per_cell =
+    const FEValuesExtractors::Vector             velocity(0);
+    const FEValuesExtractors::Scalar             pressure(dim);
+    const FEValuesExtractors::SymmetricTensor<2> stress(
+      TransportedFields<dim>::first_stress_component);
+    const bool         with_stress = rheology.has_stress();
+    const double       kept        = rheology.stress_factor(tau);
+    const unsigned int dofs_per_cell =
       fe_collection[liquid_index].n_dofs_per_cell();
     const unsigned int n_q = quadrature.size();
 
@@ -305,6 +316,9 @@ namespace vefs
     Vector<double>     cell_mass(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
     std::vector<Tensor<1, dim>>          u_star(n_q);
+    std::vector<SymmetricTensor<2, dim>> sigma_star(n_q);
+    std::vector<Tensor<1, dim>>          div_sigma_star(n_q);
+    std::vector<Tensor<2, dim>>          stretching(dofs_per_cell);
     std::vector<Tensor<1, dim>>          phi_u(dofs_per_cell);
     std::vector<SymmetricTensor<2, dim>> eps_u(dofs_per_cell);
     std::vector<double>                  div_u(dofs_per_cell);
@@ -322,6 +336,12 @@ namespace vefs
           const FEValues<dim> &fe_values = hp_fe_values.get_present_fe_values();
           advected.reinit(fields.cell_of(cell));
           advected[velocity].get_function_values(fields.fields, u_star);
+          if (with_stress)
+            {
+              advected[stress].get_function_values(fields.fields, sigma_star);
+              advected[stress].get_function_divergences(fields.fields,
+                                                        div_sigma_star);
+            }
 
           const double h = cell->minimum_vertex_distance();
           const double tau_K =
@@ -342,9 +362,22 @@ namespace vefs
                   phi_p[k]  = fe_values[pressure].value(k, q);
                   grad_p[k] = fe_values[pressure].gradient(k, q);
                 }
-              const double         JxW = fe_values.JxW(q);
-              const Tensor<1, dim> forcing =
-                rho / tau * u_star[q] + rho * gravity;
+              const double   JxW     = fe_values.JxW(q);
+              Tensor<1, dim> forcing = rho / tau * u_star[q] + rho * gravity;
+              // The explicit part of the stress, k div sigma* (k = kept), is a
+              // force in the strong residual of the pressure stabilisation.
+              Tensor<1, dim> stabilized_forcing = forcing;
+              if (with_stress)
+                {
+                  stabilized_forcing += kept * div_sigma_star[q];
+                  // The geometric term 2 k tau (grad u sigma*) : eps(v).
+                  const Tensor<2, dim> sigma(sigma_star[q]);
+                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                    if (component[j] < dim)
+                      stretching[j] = 2 * kept * tau *
+                                      fe_values[velocity].gradient(j, q) *
+                                      sigma;
+                }
               // Only the blocks that can be non-zero: this loop is most of
               // the assembly, in 3D especially.
               const double regularization =
@@ -357,10 +390,14 @@ namespace vefs
                       const bool j_is_u = component[j] < dim;
                       double     a_ij   = 0;
                       if (i_is_u && j_is_u)
-                        a_ij = (component[i] == component[j]
-                                  ? rho / tau * phi_u[i] * phi_u[j]
-                                  : 0.) +
-                               2 * mu * eps_u[i] * eps_u[j];
+                        {
+                          a_ij = (component[i] == component[j]
+                                    ? rho / tau * phi_u[i] * phi_u[j]
+                                    : 0.) +
+                                 2 * mu * eps_u[i] * eps_u[j];
+                          if (with_stress)
+                            a_ij += scalar_product(stretching[j], eps_u[i]);
+                        }
                       else if (i_is_u)
                         a_ij = -div_u[i] * phi_p[j];
                       else if (j_is_u)
@@ -377,8 +414,11 @@ namespace vefs
                         }
                       cell_matrix(i, j) += a_ij * JxW;
                     }
-                  cell_rhs(i) +=
-                    (forcing * phi_u[i] - tau_K * forcing * grad_p[i]) * JxW;
+                  cell_rhs(i) += (forcing * phi_u[i] -
+                                  tau_K * stabilized_forcing * grad_p[i]) *
+                                 JxW;
+                  if (with_stress && i_is_u)
+                    cell_rhs(i) -= kept * sigma_star[q] * eps_u[i] * JxW;
                   cell_mass(i) += phi_p[i] / mu * JxW;
                 }
             }

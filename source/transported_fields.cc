@@ -8,10 +8,12 @@ namespace vefs
   template <int dim>
   TransportedFields<dim>::TransportedFields(
     const parallel::distributed::Triangulation<dim> &triangulation,
-    const bool                                       with_stress)
+    const bool                                       with_stress,
+    const std::vector<unsigned int>                 &periodic_directions)
     : n_components(with_stress ? max_components : dim + 1)
     , fe(FE_Q<dim>(1), n_components)
     , dof_handler(triangulation)
+    , periodic_directions(periodic_directions)
   {
   }
 
@@ -26,6 +28,12 @@ namespace vefs
     constraints.clear();
     constraints.reinit(relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    for (const unsigned int d : periodic_directions)
+      DoFTools::make_periodicity_constraints(dof_handler,
+                                             2 * d,
+                                             2 * d + 1,
+                                             d,
+                                             constraints);
     constraints.close();
 
     initialize_vector(fields);

@@ -32,6 +32,46 @@ namespace vefs
               : 0.;
       }
     };
+
+    /** sigma_xx - sigma_yy: the first normal stress difference. */
+    template <int dim>
+    class FirstNormalStressDifference : public DataPostprocessorScalar<dim>
+    {
+    public:
+      FirstNormalStressDifference()
+        : DataPostprocessorScalar<dim>("first_normal_stress_difference",
+                                       update_values)
+      {
+      }
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>> &computed_quantities) const override
+      {
+        // Unrolled order: xx, yy, ...
+        constexpr unsigned int first =
+          TransportedFields<dim>::first_stress_component;
+        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
+          computed_quantities[q](0) = inputs.solution_values[q][first] -
+                                      inputs.solution_values[q][first + 1];
+      }
+    };
+
+    /** Names of the stress components, in unrolled order. */
+    template <int dim>
+    std::vector<std::string>
+    stress_names()
+    {
+      if (dim == 2)
+        return {"sigma_xx", "sigma_yy", "sigma_xy"};
+      return {"sigma_xx",
+              "sigma_yy",
+              "sigma_zz",
+              "sigma_xy",
+              "sigma_xz",
+              "sigma_yz"};
+    }
   } // namespace
 
   template <int dim>
@@ -59,13 +99,27 @@ namespace vefs
       interpretation(dim,
                      DataComponentInterpretation::component_is_part_of_vector);
     interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      field_interpretation = interpretation;
+    if (fields.has_stress())
+      for (const auto &name : stress_names<dim>())
+        {
+          names.push_back(name);
+          field_interpretation.push_back(
+            DataComponentInterpretation::component_is_scalar);
+        }
     data_out.add_data_vector(fields.dof_handler,
                              fields.fields,
                              names,
-                             interpretation);
+                             field_interpretation);
 
     const LiquidIndicator<dim> phi;
     data_out.add_data_vector(fields.dof_handler, fields.fields, phi);
+    const FirstNormalStressDifference<dim> first_normal_stress_difference;
+    if (fields.has_stress())
+      data_out.add_data_vector(fields.dof_handler,
+                               fields.fields,
+                               first_normal_stress_difference);
 
     if (flow.n_dofs() > 0)
       {

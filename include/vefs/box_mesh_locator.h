@@ -24,7 +24,16 @@ namespace vefs
   public:
     BoxMeshLocator(const Triangulation<dim>        &triangulation,
                    const BoundingBox<dim>          &cavity,
-                   const std::vector<unsigned int> &subdivisions);
+                   const std::vector<unsigned int> &subdivisions,
+                   const std::vector<unsigned int> &periodic_directions);
+
+    /**
+     * The point of the cavity that stands for @p p: wrapped around in the
+     * periodic directions, moved back onto the walls (a hair inside) in the
+     * others.
+     */
+    Point<dim>
+    fold_into_cavity(const Point<dim> &p) const;
 
     /** The active cell containing @p p; it may be artificial on this rank. */
     typename Triangulation<dim>::active_cell_iterator
@@ -38,6 +47,7 @@ namespace vefs
   private:
     const BoundingBox<dim>                                  cavity;
     std::array<unsigned int, dim>                           n_coarse;
+    std::array<bool, dim>                                   periodic;
     std::vector<typename Triangulation<dim>::cell_iterator> coarse_cells;
   };
 } // namespace vefs

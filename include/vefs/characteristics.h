@@ -15,13 +15,12 @@ namespace vefs
    * a two-stage trace, second order in the foot position. Feet may lie many
    * cells away: in the local part of the mesh the locator finds their cell,
    * on other MPI ranks RemotePointEvaluation does. Feet outside the cavity
-   * are moved back onto its boundary.
+   * are moved back onto its walls, or wrapped around periodic walls.
    */
   template <int dim>
   void
   advect_along_characteristics(TransportedFields<dim>    &fields,
                                const double               tau,
-                               const BoundingBox<dim>    &cavity,
                                const BoxMeshLocator<dim> &locator);
 } // namespace vefs
 

@@ -24,6 +24,14 @@ namespace vefs
   std::unique_ptr<Function<dim>>
   make_initial_velocity(const Parameters &parameters);
 
+  /**
+   * Initial extra stress, components in unrolled order (xx, yy, (zz,) xy,
+   * (xz, yz)); nullptr if none is given (zero stress).
+   */
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  make_initial_stress(const Parameters &parameters);
+
   /** The prescribed velocity of the transport-only mode, time dependent. */
   template <int dim>
   std::unique_ptr<Function<dim>>

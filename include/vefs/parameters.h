@@ -38,7 +38,8 @@ namespace vefs
     no_slip,
     slip,
     open,
-    velocity
+    velocity,
+    periodic
   };
 
   /** The regime selected by the material parameters (design section 1). */
@@ -104,6 +105,8 @@ namespace vefs
     double              ball_radius;
     std::string         level_set_expression;
     std::string         initial_velocity;
+    /** Empty: zero initial stress. */
+    std::string initial_stress;
 
     unsigned int min_level;
     unsigned int bulk_level;
@@ -127,6 +130,13 @@ namespace vefs
     {
       return !prescribed_velocity.empty();
     }
+
+    /** Empty: no probe. */
+    std::vector<double> probe_point;
+
+    /** Coordinate directions whose two walls are periodic. */
+    std::vector<unsigned int>
+    periodic_directions() const;
 
     unsigned int output_interval;
     bool         verbose;

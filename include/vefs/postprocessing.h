@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <vefs/box_mesh_locator.h>
 #include <vefs/parameters.h>
 #include <vefs/transported_fields.h>
 
@@ -45,7 +46,19 @@ namespace vefs
     double interface_thickness = 0;
     /** Area (length in 2D) of the free surface. */
     double surface_area = 0;
+    /** Only with a stress: see StressMeasure. */
+    double       min_conformation_eigenvalue      = 1;
+    unsigned int non_positive_conformation_points = 0;
+    /** Only with a probe point: the velocity there. */
+    Tensor<1, dim> probe_velocity;
   };
+
+  /** The velocity of @p fields at @p point, on every rank. */
+  template <int dim>
+  Tensor<1, dim>
+  probe_velocity(const TransportedFields<dim> &fields,
+                 const BoxMeshLocator<dim>    &locator,
+                 const Point<dim>             &point);
 
   /**
    * Measure the liquid: volume and centroid from phi, energies and the

@@ -10,6 +10,7 @@
 #include <vefs/mesh_adaptation.h>
 #include <vefs/parameters.h>
 #include <vefs/postprocessing.h>
+#include <vefs/rheology.h>
 #include <vefs/stokes_step.h>
 #include <vefs/transported_fields.h>
 #include <vefs/visualization.h>
@@ -63,6 +64,10 @@ namespace vefs
                    const double         tau,
                    const double         expected_cfl);
 
+    /** The regime and the mode, for the banner. */
+    std::string
+    description() const;
+
     bool
     is_last_step(const StepStatistics<dim> &statistics) const
     {
@@ -74,6 +79,7 @@ namespace vefs
            const Vector<float> &liquid_fraction);
 
     const Parameters                         &parameters;
+    const Rheology<dim>                       rheology;
     const MPI_Comm                            comm;
     ConditionalOStream                        pcout;
     mutable TimerOutput                       timer;

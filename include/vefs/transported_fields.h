@@ -45,9 +45,14 @@ namespace vefs
       std::array<types::global_dof_index, max_components> dofs;
     };
 
+    /**
+     * @p periodic_directions: the coordinate directions whose two walls
+     * (boundary ids 2d and 2d+1) are periodic.
+     */
     TransportedFields(
       const parallel::distributed::Triangulation<dim> &triangulation,
-      const bool                                       with_stress);
+      const bool                                       with_stress,
+      const std::vector<unsigned int>                 &periodic_directions);
 
     bool
     has_stress() const
@@ -137,7 +142,8 @@ namespace vefs
     VectorType                fields;
 
   private:
-    std::vector<Node> owned_nodes;
+    const std::vector<unsigned int> periodic_directions;
+    std::vector<Node>               owned_nodes;
   };
 } // namespace vefs
 

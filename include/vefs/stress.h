@@ -1,0 +1,45 @@
+#ifndef vefs_stress_h
+#define vefs_stress_h
+
+#include <deal.II/lac/vector.h>
+
+#include <vefs/rheology.h>
+#include <vefs/transported_fields.h>
+
+namespace vefs
+{
+  /**
+   * Step 4 of the design (section 2): the new stress sigma^{n+1} at the
+   * nodes of liquid cells, from the advected stress sigma* that @p fields
+   * holds there and the new velocity (already copied into @p fields). The
+   * velocity gradient at a node is the volume-weighted average of the
+   * gradients of the liquid cells around it, so that a liquid at rest keeps
+   * its stress exactly. Other nodes keep their values (the extension
+   * overwrites them).
+   */
+  template <int dim>
+  void
+  update_stress(TransportedFields<dim> &fields,
+                const Vector<float>    &liquid_fraction,
+                const Rheology<dim>    &rheology,
+                const double            tau);
+
+  /** What the statistics report of the stress. */
+  struct StressMeasure
+  {
+    /** int tr(sigma)/2 over the liquid cells. */
+    double elastic_energy = 0;
+    /** Smallest eigenvalue of the conformation tensor c (or B). */
+    double min_conformation_eigenvalue = 1;
+    /** Quadrature points of liquid cells where c is not positive definite. */
+    unsigned int non_positive_points = 0;
+  };
+
+  template <int dim>
+  StressMeasure
+  measure_stress(const TransportedFields<dim> &fields,
+                 const Vector<float>          &liquid_fraction,
+                 const Rheology<dim>          &rheology);
+} // namespace vefs
+
+#endif

@@ -1,0 +1,131 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <vefs/free_surface.h>
+#include <vefs/stress.h>
+
+namespace vefs
+{
+  template <int dim>
+  void
+  update_stress(TransportedFields<dim> &fields,
+                const Vector<float>    &liquid_fraction,
+                const Rheology<dim>    &rheology,
+                const double            tau)
+  {
+    using VectorType = typename TransportedFields<dim>::VectorType;
+    constexpr unsigned int first =
+      TransportedFields<dim>::first_stress_component;
+    constexpr unsigned int n_stress =
+      TransportedFields<dim>::n_stress_components;
+
+    // Sum over the liquid cells around each node of volume * new stress;
+    // the volume itself goes into the node's first component.
+    VectorType sum;
+    fields.initialize_vector(sum);
+    // Quadrature points at the vertices, in the vertex order of the cell.
+    FEValues<dim>                    vertex_values(fields.mapping,
+                                fields.fe,
+                                QTrapezoid<dim>(),
+                                update_gradients);
+    const FEValuesExtractors::Vector velocity(0);
+    std::vector<Tensor<2, dim>> grad_u(GeometryInfo<dim>::vertices_per_cell);
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          is_liquid(liquid_fraction[cell->active_cell_index()]))
+        {
+          vertex_values.reinit(cell);
+          vertex_values[velocity].get_function_gradients(fields.fields, grad_u);
+          const double weight = cell->measure();
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              SymmetricTensor<2, dim> advected;
+              for (unsigned int i = 0; i < n_stress; ++i)
+                advected.access_raw_entry(i) =
+                  fields.fields(cell->vertex_dof_index(v, first + i));
+              const SymmetricTensor<2, dim> updated =
+                rheology.updated_stress(advected, grad_u[v], tau);
+              sum(cell->vertex_dof_index(v, 0)) += weight;
+              for (unsigned int i = 0; i < n_stress; ++i)
+                sum(cell->vertex_dof_index(v, first + i)) +=
+                  weight * updated.access_raw_entry(i);
+            }
+        }
+    sum.compress(VectorOperation::add);
+
+    for (const auto &node : fields.nodes())
+      {
+        const double weight = sum(node.dofs[0]);
+        if (weight > 0)
+          for (unsigned int i = 0; i < n_stress; ++i)
+            fields.fields(node.dofs[first + i]) =
+              sum(node.dofs[first + i]) / weight;
+      }
+    fields.finalize();
+  }
+
+  template <int dim>
+  StressMeasure
+  measure_stress(const TransportedFields<dim> &fields,
+                 const Vector<float>          &liquid_fraction,
+                 const Rheology<dim>          &rheology)
+  {
+    const QGauss<dim>                            quadrature(2);
+    FEValues<dim>                                fe_values(fields.mapping,
+                            fields.fe,
+                            quadrature,
+                            update_values | update_JxW_values);
+    const FEValuesExtractors::SymmetricTensor<2> stress(
+      TransportedFields<dim>::first_stress_component);
+    std::vector<SymmetricTensor<2, dim>> sigma(quadrature.size());
+
+    StressMeasure measure;
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          is_liquid(liquid_fraction[cell->active_cell_index()]))
+        {
+          fe_values.reinit(cell);
+          fe_values[stress].get_function_values(fields.fields, sigma);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              measure.elastic_energy +=
+                Rheology<dim>::elastic_energy_density(sigma[q]) *
+                fe_values.JxW(q);
+              // Eigenvalues come sorted in descending order.
+              const double lowest =
+                eigenvalues(rheology.conformation(sigma[q]))[dim - 1];
+              measure.min_conformation_eigenvalue =
+                std::min(measure.min_conformation_eigenvalue, lowest);
+              if (!(lowest > 0))
+                ++measure.non_positive_points;
+            }
+        }
+    const MPI_Comm comm =
+      fields.dof_handler.get_triangulation().get_communicator();
+    measure.elastic_energy = Utilities::MPI::sum(measure.elastic_energy, comm);
+    measure.min_conformation_eigenvalue =
+      Utilities::MPI::min(measure.min_conformation_eigenvalue, comm);
+    measure.non_positive_points =
+      Utilities::MPI::sum(measure.non_positive_points, comm);
+    return measure;
+  }
+
+  template void
+  update_stress<2>(TransportedFields<2> &,
+                   const Vector<float> &,
+                   const Rheology<2> &,
+                   const double);
+  template void
+  update_stress<3>(TransportedFields<3> &,
+                   const Vector<float> &,
+                   const Rheology<3> &,
+                   const double);
+  template StressMeasure
+  measure_stress<2>(const TransportedFields<2> &,
+                    const Vector<float> &,
+                    const Rheology<2> &);
+  template StressMeasure
+  measure_stress<3>(const TransportedFields<3> &,
+                    const Vector<float> &,
+                    const Rheology<3> &);
+} // namespace vefs
