@@ -6,9 +6,10 @@ Oldroyd-B model, Material/Alpha = 0, sigma = G (B - I), G = eta_p / lambda).
 Usage:
   shear_wave.py OUTPUT_DIR [--bound 0.02]     (prints the report of a run)
 
-Scene: cavity [x0,x1] x [y0,y1], periodic in x and y, filled with the
-solid, u(0) = A sin(k (y - y0)) e_x with k = 2 pi / L_y (L_y = y1 - y0),
-sigma(0) = 0, no gravity. Exact solution, at any amplitude:
+Scene: cavity [x0,x1] x [y0,y1], periodic in x, filled with the solid,
+u(0) = A sin(k (y - y0)) e_x, sigma(0) = 0, no gravity; either periodic in
+y with k = 2 pi / L_y (L_y = y1 - y0), or with no-slip walls y0 and y1
+(u = 0 there at all times) and k = pi / L_y (half a wavelength). Exact solution, at any amplitude:
 
     u = A sin(k (y - y0)) cos(w t) e_x,   w = k c,   c = sqrt(G / rho).
 
@@ -56,7 +57,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vefs_stats import (read_statistics, read_parameters, parameter_float,  # noqa: E402
+from vefs_stats import (read_statistics, read_parameters, parameter, parameter_float,  # noqa: E402
                         parameter_floats, column, parabolic_vertex,
                         zero_crossings)
 
@@ -85,6 +86,10 @@ def run_parameters(output_dir):
     lower = parameter_floats(prm, "Cavity/Lower corner")
     upper = parameter_floats(prm, "Cavity/Upper corner")
     probe = parameter_floats(prm, "Postprocess/Probe point")
+    y_walls = (parameter(prm, "Walls/y-"), parameter(prm, "Walls/y+"))
+    if y_walls not in (("periodic", "periodic"), ("no-slip", "no-slip")):
+        raise ValueError("the shear wave needs y walls both periodic or both "
+                         "no-slip, got %s, %s" % y_walls)
     if not (rho > 0 and eta_p > 0 and lam > 0):
         raise ValueError("the shear wave needs Density, Polymer viscosity "
                          "and Relaxation time > 0 (got rho = %g, eta_p = %g, "
@@ -98,7 +103,7 @@ def run_parameters(output_dir):
                          "one in y")
     G = eta_p / lam
     c = math.sqrt(G / rho)
-    k = 2.0 * math.pi / L_y
+    k = (2.0 if y_walls[0] == "periodic" else 1.0) * math.pi / L_y
     return {"rho": rho, "eta_p": eta_p, "lam": lam, "alpha": alpha, "G": G,
             "c": c, "y0": lower[1], "L_y": L_y, "k": k, "w": k * c,
             "probe": probe,

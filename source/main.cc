@@ -123,6 +123,8 @@ main(int argc, char *argv[])
           prm.parse_input(file);
         }
       parameters.parse(prm);
+      parameters.check_for_ranks(
+        Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
     }
   catch (const InputError &error)
     {

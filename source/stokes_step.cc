@@ -169,6 +169,8 @@ namespace vefs
                                              d,
                                              constraints);
     make_wall_constraints(time);
+    // A periodic pair may be split between ranks: each must know the
+    // constraints of the other side.
     constraints.close();
 
     Table<2, DoFTools::Coupling> coupling(dim + 1, dim + 1);

@@ -67,6 +67,10 @@ namespace vefs
     void
     parse(dealii::ParameterHandler &prm);
 
+    /** What a run on @p n_ranks MPI ranks cannot do; throws InputError. */
+    void
+    check_for_ranks(const unsigned int n_ranks) const;
+
     Regime
     regime() const;
 
