@@ -62,9 +62,7 @@ namespace vefs
           const auto dof_cell = fields.cell_of(cell);
           for (const unsigned int v : cell->vertex_indices())
             {
-              double weight = 1;
-              for (unsigned int d = 0; d < dim; ++d)
-                weight *= ((v >> d) & 1) ? xi[d] : 1 - xi[d];
+              const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
               for (unsigned int c = 0; c < n_components; ++c)
                 values[i][c] +=
                   weight * fields.fields(dof_cell->vertex_dof_index(v, c));

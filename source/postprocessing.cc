@@ -97,9 +97,7 @@ namespace vefs
         const auto       dof_cell = fields.cell_of(cell);
         for (const unsigned int v : cell->vertex_indices())
           {
-            double weight = 1;
-            for (unsigned int d = 0; d < dim; ++d)
-              weight *= ((v >> d) & 1) ? xi[d] : 1 - xi[d];
+            const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
             for (unsigned int d = 0; d < dim; ++d)
               u[d] += weight * fields.fields(dof_cell->vertex_dof_index(v, d));
           }

@@ -44,6 +44,19 @@ namespace vefs
     unit_point(const typename Triangulation<dim>::active_cell_iterator &cell,
                const Point<dim>                                        &p);
 
+    /**
+     * Weight of vertex @p v in the Q1 interpolation at the unit-cell point
+     * @p xi (vertex v has the unit coordinates given by its bits).
+     */
+    static double
+    vertex_weight(const Point<dim> &xi, const unsigned int v)
+    {
+      double weight = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        weight *= ((v >> d) & 1) ? xi[d] : 1 - xi[d];
+      return weight;
+    }
+
   private:
     const BoundingBox<dim>                                  cavity;
     std::array<unsigned int, dim>                           n_coarse;
