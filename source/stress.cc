@@ -89,8 +89,7 @@ namespace vefs
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
               measure.elastic_energy +=
-                Rheology<dim>::elastic_energy_density(sigma[q]) *
-                fe_values.JxW(q);
+                rheology.elastic_energy_density(sigma[q]) * fe_values.JxW(q);
               // Eigenvalues come sorted in descending order.
               const double lowest =
                 eigenvalues(rheology.conformation(sigma[q]))[dim - 1];

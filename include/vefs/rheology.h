@@ -80,14 +80,19 @@ namespace vefs
     }
 
     /**
-     * Elastic energy density: tr(sigma) / 2, which is G/2 (tr B - d) for the
-     * neo-Hookean solid and the spring energy eta_p/(2 lambda) tr(c - I) of
-     * the Oldroyd-B dumbbells.
+     * Elastic (free) energy density G/2 (tr c - d - ln det c), G =
+     * eta_p / lambda: the free energy of the Oldroyd-B dumbbells, and for
+     * the incompressible neo-Hookean solid (det B = 1) its strain energy
+     * G/2 (tr B - d). It is non-negative for a positive definite c; where c
+     * is not, the logarithm is dropped (those points are counted apart).
      */
-    static double
-    elastic_energy_density(const SymmetricTensor<2, dim> &sigma)
+    double
+    elastic_energy_density(const SymmetricTensor<2, dim> &sigma) const
     {
-      return 0.5 * trace(sigma);
+      const SymmetricTensor<2, dim> c = conformation(sigma);
+      const double                  J = determinant(c);
+      return 0.5 * (eta_p / lambda) *
+             (trace(c) - dim - (J > 0 ? std::log(J) : 0.));
     }
 
   private:

@@ -27,7 +27,7 @@ namespace vefs
   /** What the statistics report of the stress. */
   struct StressMeasure
   {
-    /** int tr(sigma)/2 over the liquid cells. */
+    /** Rheology::elastic_energy_density() integrated over the liquid cells. */
     double elastic_energy = 0;
     /** Smallest eigenvalue of the conformation tensor c (or B). */
     double min_conformation_eigenvalue = 1;
