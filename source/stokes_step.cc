@@ -15,6 +15,7 @@
 
 #include <vefs/free_surface.h>
 #include <vefs/initial_liquid.h>
+#include <vefs/stokes_cell_system.h>
 #include <vefs/stokes_step.h>
 
 #include <iomanip>
@@ -274,156 +275,25 @@ namespace vefs
     system_rhs           = 0;
     lumped_pressure_mass = 0;
 
-    const double   rho = parameters.density;
-    const double   mu  = rheology.effective_viscosity(tau);
-    Tensor<1, dim> gravity;
-    for (unsigned int d = 0; d < dim; ++d)
-      gravity[d] = parameters.gravity[d];
-    const double cavity_diameter = [&]() {
-      double s = 0;
-      for (unsigned int d = 0; d < dim; ++d)
-        s +=
-          std::pow(parameters.cavity_upper[d] - parameters.cavity_lower[d], 2);
-      return std::sqrt(s);
-    }();
-
-    const QGauss<dim>     quadrature(2);
-    const QGauss<dim - 1> face_quadrature(2);
-    hp::QCollection<dim>  q_collection(quadrature, quadrature);
-    hp::FEValues<dim>     hp_fe_values(fe_collection,
-                                   q_collection,
-                                   update_values | update_gradients |
-                                     update_JxW_values);
-    FEValues<dim>         advected(fields.mapping,
-                           fields.fe,
-                           quadrature,
-                           update_values | update_gradients);
-    FEFaceValues<dim>     face_values(fe_collection[liquid_index],
+    StokesCellSystem<dim>            local(parameters,
+                                rheology,
+                                fe_collection[liquid_index],
+                                fields,
+                                tau);
+    const QGauss<dim - 1>            face_quadrature(2);
+    FEFaceValues<dim>                face_values(fe_collection[liquid_index],
                                   face_quadrature,
                                   update_values | update_JxW_values);
-
-    const FEValuesExtractors::Vector             velocity(0);
-    const FEValuesExtractors::Scalar             pressure(dim);
-    const FEValuesExtractors::SymmetricTensor<2> stress(
-      TransportedFields<dim>::first_stress_component);
-    const bool         with_stress = rheology.has_stress();
-    const double       kept        = rheology.stress_factor(tau);
-    const unsigned int dofs_per_cell =
+    const FEValuesExtractors::Scalar pressure(dim);
+    const unsigned int               dofs_per_cell =
       fe_collection[liquid_index].n_dofs_per_cell();
-    const unsigned int n_q = quadrature.size();
-
-    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
-    FullMatrix<double> cell_schur(dofs_per_cell, dofs_per_cell);
-    Vector<double>     cell_rhs(dofs_per_cell);
-    Vector<double>     cell_mass(dofs_per_cell);
     std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
-    std::vector<Tensor<1, dim>>          u_star(n_q);
-    std::vector<SymmetricTensor<2, dim>> sigma_star(n_q);
-    std::vector<Tensor<1, dim>>          div_sigma_star(n_q);
-    std::vector<Tensor<2, dim>>          stretching(dofs_per_cell);
-    std::vector<Tensor<1, dim>>          phi_u(dofs_per_cell);
-    std::vector<SymmetricTensor<2, dim>> eps_u(dofs_per_cell);
-    std::vector<double>                  div_u(dofs_per_cell);
-    std::vector<double>                  phi_p(dofs_per_cell);
-    std::vector<Tensor<1, dim>>          grad_p(dofs_per_cell);
-    std::vector<unsigned int>            component(dofs_per_cell);
-    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-      component[i] =
-        fe_collection[liquid_index].system_to_component_index(i).first;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index)
         {
-          hp_fe_values.reinit(cell);
-          const FEValues<dim> &fe_values = hp_fe_values.get_present_fe_values();
-          advected.reinit(fields.cell_of(cell));
-          advected[velocity].get_function_values(fields.fields, u_star);
-          if (with_stress)
-            {
-              advected[stress].get_function_values(fields.fields, sigma_star);
-              advected[stress].get_function_divergences(fields.fields,
-                                                        div_sigma_star);
-            }
-
+          local.compute(cell);
           const double h = cell->minimum_vertex_distance();
-          const double tau_K =
-            parameters.pressure_stabilization / (rho / tau + 4 * mu / (h * h));
-          const double weight = tau / rho + tau_K;
-
-          cell_matrix = 0;
-          cell_schur  = 0;
-          cell_rhs    = 0;
-          cell_mass   = 0;
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              for (unsigned int k = 0; k < dofs_per_cell; ++k)
-                {
-                  phi_u[k]  = fe_values[velocity].value(k, q);
-                  eps_u[k]  = fe_values[velocity].symmetric_gradient(k, q);
-                  div_u[k]  = fe_values[velocity].divergence(k, q);
-                  phi_p[k]  = fe_values[pressure].value(k, q);
-                  grad_p[k] = fe_values[pressure].gradient(k, q);
-                }
-              const double   JxW     = fe_values.JxW(q);
-              Tensor<1, dim> forcing = rho / tau * u_star[q] + rho * gravity;
-              // The explicit part of the stress, k div sigma* (k = kept), is a
-              // force in the strong residual of the pressure stabilisation.
-              Tensor<1, dim> stabilized_forcing = forcing;
-              if (with_stress)
-                {
-                  stabilized_forcing += kept * div_sigma_star[q];
-                  // The geometric term 2 k tau (grad u sigma*) : eps(v).
-                  const Tensor<2, dim> sigma(sigma_star[q]);
-                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                    if (component[j] < dim)
-                      stretching[j] = 2 * kept * tau *
-                                      fe_values[velocity].gradient(j, q) *
-                                      sigma;
-                }
-              // Only the blocks that can be non-zero: this loop is most of
-              // the assembly, in 3D especially.
-              const double regularization =
-                1e-3 / (cavity_diameter * cavity_diameter);
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                {
-                  const bool i_is_u = component[i] < dim;
-                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                    {
-                      const bool j_is_u = component[j] < dim;
-                      double     a_ij   = 0;
-                      if (i_is_u && j_is_u)
-                        {
-                          a_ij = (component[i] == component[j]
-                                    ? rho / tau * phi_u[i] * phi_u[j]
-                                    : 0.) +
-                                 2 * mu * eps_u[i] * eps_u[j];
-                          if (with_stress)
-                            a_ij += scalar_product(stretching[j], eps_u[i]);
-                        }
-                      else if (i_is_u)
-                        a_ij = -div_u[i] * phi_p[j];
-                      else if (j_is_u)
-                        a_ij = -phi_p[i] * div_u[j] -
-                               tau_K * rho / tau * phi_u[j] * grad_p[i];
-                      else
-                        {
-                          a_ij = -tau_K * grad_p[j] * grad_p[i];
-                          cell_schur(i, j) +=
-                            weight *
-                            (grad_p[i] * grad_p[j] +
-                             regularization * phi_p[i] * phi_p[j]) *
-                            JxW;
-                        }
-                      cell_matrix(i, j) += a_ij * JxW;
-                    }
-                  cell_rhs(i) += (forcing * phi_u[i] -
-                                  tau_K * stabilized_forcing * grad_p[i]) *
-                                 JxW;
-                  if (with_stress && i_is_u)
-                    cell_rhs(i) -= kept * sigma_star[q] * eps_u[i] * JxW;
-                  cell_mass(i) += phi_p[i] / mu * JxW;
-                }
-            }
 
           // In the Schur preconditioner the pressure vanishes on the free
           // surface (zero traction): a penalty there keeps L_w regular.
@@ -435,21 +305,22 @@ namespace vefs
                      face_values.quadrature_point_indices())
                   for (unsigned int i = 0; i < dofs_per_cell; ++i)
                     for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                      cell_schur(i, j) +=
-                        10 * weight / h * face_values[pressure].value(i, q) *
-                        face_values[pressure].value(j, q) * face_values.JxW(q);
+                      local.schur(i, j) += 10 * local.schur_weight / h *
+                                           face_values[pressure].value(i, q) *
+                                           face_values[pressure].value(j, q) *
+                                           face_values.JxW(q);
               }
 
           cell->get_dof_indices(dof_indices);
-          constraints.distribute_local_to_global(cell_matrix,
-                                                 cell_rhs,
+          constraints.distribute_local_to_global(local.matrix,
+                                                 local.rhs,
                                                  dof_indices,
                                                  system_matrix,
                                                  system_rhs);
-          constraints.distribute_local_to_global(cell_schur,
+          constraints.distribute_local_to_global(local.schur,
                                                  dof_indices,
                                                  schur_matrix);
-          constraints.distribute_local_to_global(cell_mass,
+          constraints.distribute_local_to_global(local.pressure_mass,
                                                  dof_indices,
                                                  lumped_pressure_mass);
         }

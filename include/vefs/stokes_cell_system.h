@@ -1,0 +1,71 @@
+#ifndef vefs_stokes_cell_system_h
+#define vefs_stokes_cell_system_h
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <vefs/parameters.h>
+#include <vefs/rheology.h>
+#include <vefs/transported_fields.h>
+
+namespace vefs
+{
+  /**
+   * The weak form of the diffusion step on one liquid cell (design section
+   * 2, step 3), Q1-Q1 with PSPG: the cell matrix and right-hand side, and
+   * the two pieces of the Schur-complement preconditioner (the pressure
+   * Laplacian weighted by tau/rho + tau_K, and the lumped pressure mass
+   * divided by mu). The rheology supplies mu, k and the advected stress
+   * terms. Used by the assembly and by the reactions of contact walls.
+   */
+  template <int dim>
+  class StokesCellSystem
+  {
+  public:
+    StokesCellSystem(const Parameters             &parameters,
+                     const Rheology<dim>          &rheology,
+                     const FiniteElement<dim>     &flow_fe,
+                     const TransportedFields<dim> &fields,
+                     const double                  tau);
+
+    /** Compute the members below for the liquid @p cell. */
+    void
+    compute(const typename DoFHandler<dim>::active_cell_iterator &cell);
+
+    FullMatrix<double> matrix;
+    Vector<double>     rhs;
+    FullMatrix<double> schur;
+    Vector<double>     pressure_mass;
+    /** tau/rho + tau_K of the cell, the weight of the Schur Laplacian. */
+    double schur_weight = 0;
+
+  private:
+    const Parameters             &parameters;
+    const Rheology<dim>          &rheology;
+    const TransportedFields<dim> &fields;
+    const double                  tau;
+    const double                  mu;
+    const double                  kept;
+    Tensor<1, dim>                gravity;
+    double                        regularization;
+
+    const QGauss<dim> quadrature;
+    FEValues<dim>     fe_values;
+    FEValues<dim>     advected;
+
+    std::vector<unsigned int>            component;
+    std::vector<Tensor<1, dim>>          u_star;
+    std::vector<SymmetricTensor<2, dim>> sigma_star;
+    std::vector<Tensor<1, dim>>          div_sigma_star;
+    std::vector<Tensor<2, dim>>          stretching;
+    std::vector<Tensor<1, dim>>          phi_u;
+    std::vector<SymmetricTensor<2, dim>> eps_u;
+    std::vector<double>                  div_u;
+    std::vector<double>                  phi_p;
+    std::vector<Tensor<1, dim>>          grad_p;
+  };
+} // namespace vefs
+
+#endif
