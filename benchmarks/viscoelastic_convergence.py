@@ -7,24 +7,36 @@ Usage (from anywhere; the plot needs matplotlib, i.e. Debian's python3):
   /usr/bin/python3 benchmarks/viscoelastic_convergence.py
       [--scene prm/waters_king.prm] [--case auto|waters-king|shear-wave]
       [--vefs build/vefs] [--levels L ...] [--time-steps TAU ...]
-      [--end-time T] [--output doc/<scene>_convergence.md] [--plot PNG]
-      [--results-dir benchmarks/results] [--t-max 10] [--no-run] [--dry-run]
+      [--end-time T] [--set SECTION/ENTRY=VALUE ...] [--tag TAG]
+      [--output doc/<scene>_convergence.md] [--plot PNG]
+      [--results-dir benchmarks/results] [--t-max 10] [--no-snapshot]
+      [--no-run] [--dry-run]
 
 For every pair (level L, time step tau) a copy of the base scene is written
-to <results-dir>/<scene>_conv_L<L>_dt<tau>.prm with
+to <results-dir>/<run>.prm, <run> = <scene>[_<tag>]_conv_L<L>_dt<tau>, with
+  every --set SECTION/.../ENTRY=VALUE (e.g. --set "Initial liquid/Velocity=
+                                    0.01*sin(2*pi*y); 0"; top-level entries
+                                    without a section; applied first)
   Mesh refinement / Minimum level = Bulk level = Maximum level = L
                                     (a uniform mesh)
   Time / Time step                = tau
   Time / Target CFL               = 0      (the time step is fixed)
   Time / End time                 = --end-time (if given)
   Output / Interval               = 0      (no visualization files)
-  Output directory                = <results-dir>/<scene>_conv_L<L>_dt<tau>
+  Output directory                = <results-dir>/<run>
 and run on one rank from the repository root by the helper of the other
 studies (benchmarks/broken_dam_refinement.py run_serial_scene: log in
 <name>.log, wall time of the whole process and git revision of the
-executable in <name>.json). Defaults: the levels are the scene's Maximum
-level and the next one, the time steps the scene's one, half and a
-quarter of it.
+executable in <name>.json, to which the study adds the CPU time of the
+process, the 1-minute load average before the run, the --set entries and
+the build time and sha256 of the executable; the git state is judged
+once, at the start). The runs use a copy of the executable taken
+at the start (<results-dir>/vefs.snapshot, as in transport_benchmarks.py;
+--no-snapshot runs --vefs itself), so that a rebuild during the study
+neither mixes executables nor breaks a run. Defaults: the levels are the
+scene's Maximum level and the next one, the time steps the scene's one,
+half and a quarter of it. --tag names a variant (e.g. one made with
+--set) so that its runs and report do not overwrite those of the scene.
 
 Measures (the analysis is that of the test checkers, imported from
 scripts/):
@@ -34,9 +46,14 @@ scripts/):
   shear-wave (scripts/shear_wave.py analyse_run): |frequency error|
       |w_sim - w| / w from the zero crossings, and the amplitude loss per
       period from the extrema of the full half periods.
-The table also gives the number of steps, the wall time, the smallest
-eigenvalue of the conformation tensor over the run and the largest number
-of points with a non-positive one (if the statistics have these columns).
+The table also gives the number of steps, the largest CFL number of the
+run, the wall time and CPU time of the whole process, the time per step
+measured by vefs (last `wall_time` of the statistics over the steps), the
+load average before the run (the wall time depends on what else runs),
+the smallest eigenvalue of the conformation tensor over the run and the
+largest number of points with a non-positive one (if the statistics have
+these columns; that count also includes NaN eigenvalues, see
+doc/viscoelastic.md).
 
 Observed order in time: for each level, between successive time steps
 tau1 > tau2 (halvings by default), p = log(e1/e2) / log(tau1/tau2), i.e.
@@ -57,6 +74,7 @@ import datetime
 import json
 import math
 import os
+import resource
 import shlex
 import sys
 
@@ -64,6 +82,7 @@ REPO_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(REPO_ROOT, "scripts"))
 sys.path.insert(0, os.path.join(REPO_ROOT, "benchmarks"))
 import broken_dam_refinement as bdr  # noqa: E402
+import transport_benchmarks as tb  # noqa: E402
 import shear_wave  # noqa: E402
 import waters_king  # noqa: E402
 from vefs_stats import (read_statistics, read_parameters, parameter,  # noqa: E402
@@ -85,6 +104,25 @@ CASES = {
 
 def run_name(stem, level, tau):
     return "%s_conv_L%d_dt%g" % (stem, level, tau)
+
+
+def parse_set(item):
+    """'Section/Sub/Entry=value' -> (['Section', 'Sub'], 'Entry', 'value');
+    raises ValueError without '=' or entry name."""
+    if "=" not in item:
+        raise ValueError("--set %r: expected SECTION/ENTRY=VALUE" % item)
+    key, value = item.split("=", 1)
+    parts = [x.strip() for x in key.split("/")]
+    if not parts[-1] or any(not x for x in parts):
+        raise ValueError("--set %r: empty section or entry name" % item)
+    return parts[:-1], parts[-1], value.strip()
+
+
+def apply_sets(text, sets):
+    for item in sets or []:
+        path, name, value = parse_set(item)
+        text = bdr.set_entry(text, path, name, value)
+    return text
 
 
 def make_prm(text, level, tau, output_dir, end_time=None):
@@ -122,6 +160,11 @@ def analyse(case, out_dir, t_max):
         r["min_eigenvalue"] = min(stats["min_conformation_eigenvalue"])
     if stats.get("non_positive_conformation_points"):
         r["non_positive"] = int(max(stats["non_positive_conformation_points"]))
+    if stats.get("cfl"):
+        r["max_cfl"] = max(stats["cfl"])
+    if stats.get("wall_time") and r["steps"] > 0:
+        # vefs's own clock at the last step (set-up included), per step
+        r["wall_per_step"] = stats["wall_time"][-1] / r["steps"]
     if case == "waters-king":
         w = waters_king.compare_run(out_dir, t_max)
         r.update(wk_error=w["max_error"], E=w["E"], beta=w["beta"],
@@ -173,7 +216,27 @@ def format_markdown(case, runs, levels, taus, info):
         "- Machine: `nproc` = %s, %s; 1 rank per run." %
         (bdr.nproc(), bdr.cpu_model()),
         "- Command: `%s`" % info["command"],
+    ]
+    if info.get("sets"):
+        lines.append("- Scene entries changed: %s."
+                     % ", ".join("`%s`" % x for x in info["sets"]))
+    lines += [
         "- vefs revision: %s" % ", ".join(info["revisions"] or ["unknown"]),
+        "- Executable: %s" % ("; ".join(info.get("executables") or [])
+                              or "not recorded"),
+        "- Wall time: the whole vefs process, one rank; the machine has 2 "
+        "cores and the other one may have been busy with other work (load "
+        "before: 1-minute load average when the run started), so the wall "
+        "times are indicative; the CPU time (user + system of the process) "
+        "suffers less from a busy machine. ms/step: vefs's own clock at "
+        "the last step (set-up included) over the steps.",
+        "- min eig(conformation): smallest eigenvalue of c = I + lambda "
+        "sigma / eta_p (B for the solid) over the Gauss points and steps; "
+        "non-positive points: largest per-step value of the column "
+        "non_positive_conformation_points, which also counts points whose "
+        "eigenvalue came out NaN (rounding in deal.II's closed-form 2x2 "
+        "eigenvalues where c is close to I; see doc/viscoelastic.md): with "
+        "a positive minimum, no point lost positivity.",
     ]
     if case == "waters-king":
         any_run = next((r for r in runs.values() if "E" in r), None)
@@ -201,7 +264,8 @@ def format_markdown(case, runs, levels, taus, info):
                      "t = 0 (scripts/shear_wave.py).")
     lines.append("")
 
-    header = ["L", "tau [s]", "steps", "wall time [s]"]
+    header = ["L", "tau [s]", "steps", "max CFL", "wall time [s]",
+              "CPU time [s]", "ms/step", "load before"]
     if case == "waters-king":
         header += ["max error / 1.5", "overshoot U (T)"]
     else:
@@ -220,7 +284,12 @@ def format_markdown(case, runs, levels, taus, info):
                                               what.replace("|", "/")) +
                              " |" * (len(header) - 3))
                 continue
-            cells += ["%d" % r["steps"], _f("%.1f", r.get("wall_time"))]
+            cells += ["%d" % r["steps"], _f("%.2g", r.get("max_cfl")),
+                      _f("%.1f", r.get("wall_time")),
+                      _f("%.1f", r.get("cpu_time")),
+                      _f("%.2g", None if r.get("wall_per_step") is None
+                         else 1e3 * r["wall_per_step"]),
+                      _f("%.1f", r.get("load_before"))]
             if case == "waters-king":
                 err = _f("%.3g", r["wk_error"])
                 if not r["complete"]:
@@ -350,8 +419,19 @@ def parse_args(argv=None):
     p.add_argument("--end-time", type=float,
                    help="Time / End time of the runs (default: the "
                    "scene's)")
+    p.add_argument("--set", action="append", default=[],
+                   metavar="SECTION/ENTRY=VALUE",
+                   help="change an entry of the scene in every run "
+                   "(repeatable), e.g. --set \"Initial liquid/Velocity="
+                   "0.01*sin(2*pi*y); 0\"")
+    p.add_argument("--tag",
+                   help="variant name: runs <scene>_<tag>_conv_..., report "
+                   "doc/<scene>_<tag>_convergence.md")
+    p.add_argument("--no-snapshot", action="store_true",
+                   help="run --vefs itself, not a copy taken at the start")
     p.add_argument("--output",
-                   help="Markdown report (default doc/<scene>_convergence.md)")
+                   help="Markdown report (default doc/<scene>[_<tag>]"
+                   "_convergence.md)")
     p.add_argument("--plot",
                    help="PNG plot (default: --output with .png)")
     p.add_argument("--results-dir", default="benchmarks/results",
@@ -375,6 +455,11 @@ def main(argv=None):
         return 1
     with open(scene) as f:
         base = f.read()
+    try:
+        base = apply_sets(base, args.set)
+    except ValueError as e:
+        print("viscoelastic_convergence: %s" % e, file=sys.stderr)
+        return 1
     prm = read_parameters(scene)
     case = args.case if args.case != "auto" else detect_case(scene, prm)
     if case is None:
@@ -382,6 +467,8 @@ def main(argv=None):
               "--case" % args.scene, file=sys.stderr)
         return 1
     stem = os.path.splitext(os.path.basename(scene))[0]
+    if args.tag:
+        stem += "_" + args.tag
     try:
         levels = args.levels or [
             int(parameter(prm, "Mesh refinement/Maximum level", scene)),
@@ -428,9 +515,24 @@ def main(argv=None):
         if not os.path.exists(ignore):
             with open(ignore, "w") as f:
                 f.write("# generated by the benchmark scripts\n*\n")
+        # git state judged once, against the build time of the original
+        # (HEAD may move during the study; the copy does not change)
+        revision = bdr.git_revision(vefs)
+        if not args.no_snapshot:
+            try:
+                copy, ident = tb.snapshot_executable(vefs, results)
+            except RuntimeError as e:
+                print("viscoelastic_convergence: %s" % e, file=sys.stderr)
+                return 1
+            print("running a copy of %s (built %s, sha256 %s...): %s"
+                  % (bdr.rel(vefs), ident["built"], ident["sha256"][:12],
+                     bdr.rel(copy)), flush=True)
+            vefs = copy
+        executable = tb.executable_id(vefs)
 
     runs = {}
     revisions = []
+    executables = []
     failed = False
     for level in levels:
         for tau in taus:
@@ -440,6 +542,9 @@ def main(argv=None):
             if not args.no_run:
                 if os.path.exists(info_file):
                     os.remove(info_file)  # no stale record of a failed run
+                load = os.getloadavg()[0]
+                usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+                cpu0 = usage.ru_utime + usage.ru_stime
                 if not bdr.run_serial_scene(
                         vefs, results, name,
                         make_prm(base, level, tau, out_dir, args.end_time)):
@@ -447,6 +552,16 @@ def main(argv=None):
                                           % name}
                     failed = True
                     continue
+                with open(info_file) as f:
+                    info = json.load(f)
+                usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+                info["cpu_time"] = usage.ru_utime + usage.ru_stime - cpu0
+                info["load_before"] = load
+                info["executable"] = executable
+                info["revision"] = revision
+                info["sets"] = args.set
+                with open(info_file, "w") as f:
+                    json.dump(info, f)
             info = {}
             if os.path.exists(info_file):
                 with open(info_file) as f:
@@ -459,14 +574,22 @@ def main(argv=None):
                 failed = True
                 continue
             r["wall_time"] = info.get("wall_time")
+            r["cpu_time"] = info.get("cpu_time")
+            r["load_before"] = info.get("load_before")
             if info.get("revision") and info["revision"] not in revisions:
                 revisions.append(info["revision"])
+            exe = info.get("executable")
+            if exe:
+                label = "built %s, sha256 %s" % (exe["built"],
+                                                 exe["sha256"][:12])
+                if label not in executables:
+                    executables.append(label)
             runs[(level, tau)] = r
 
     info = {"date": datetime.date.today().isoformat(),
             "scene": bdr.rel(scene), "end_time": args.end_time,
             "command": command, "revisions": revisions, "t_max": args.t_max,
-            "plot": None}
+            "plot": None, "sets": args.set, "executables": executables}
     os.makedirs(os.path.dirname(output), exist_ok=True)
     os.makedirs(os.path.dirname(plot_path), exist_ok=True)
     if plot(case, runs, levels, taus, plot_path, args.t_max):

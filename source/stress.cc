@@ -6,6 +6,31 @@
 
 namespace vefs
 {
+  namespace
+  {
+    /**
+     * Smallest eigenvalue of a symmetric tensor, real even when the tensor
+     * is close to a multiple of the identity (the closed form of
+     * eigenvalues() then takes the root of a slightly negative number).
+     */
+    double
+    smallest_eigenvalue(const SymmetricTensor<2, 2> &c)
+    {
+      const double mean = 0.5 * (c[0][0] + c[1][1]);
+      const double half = 0.5 * (c[0][0] - c[1][1]);
+      return mean - std::sqrt(half * half + c[0][1] * c[0][1]);
+    }
+
+    double
+    smallest_eigenvalue(const SymmetricTensor<2, 3> &c)
+    {
+      // Jacobi rotations: robust for clustered eigenvalues; sorted in
+      // descending order.
+      return eigenvectors(c, SymmetricTensorEigenvectorMethod::jacobi)[2]
+        .first;
+    }
+  } // namespace
+
   template <int dim>
   void
   update_stress(TransportedFields<dim> &fields,
@@ -90,9 +115,8 @@ namespace vefs
             {
               measure.elastic_energy +=
                 rheology.elastic_energy_density(sigma[q]) * fe_values.JxW(q);
-              // Eigenvalues come sorted in descending order.
               const double lowest =
-                eigenvalues(rheology.conformation(sigma[q]))[dim - 1];
+                smallest_eigenvalue(rheology.conformation(sigma[q]));
               measure.min_conformation_eigenvalue =
                 std::min(measure.min_conformation_eigenvalue, lowest);
               if (!(lowest > 0))
