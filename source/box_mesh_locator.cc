@@ -21,12 +21,13 @@ namespace vefs
     const Triangulation<dim>        &triangulation,
     const BoundingBox<dim>          &cavity,
     const std::vector<unsigned int> &subdivisions,
-    const std::vector<unsigned int> &periodic_directions)
+    const std::array<WallType, 6>   &wall_types)
     : cavity(cavity)
   {
-    periodic.fill(false);
-    for (const unsigned int d : periodic_directions)
-      periodic[d] = true;
+    for (unsigned int d = 0; d < dim; ++d)
+      periodic[d] = wall_types[2 * d] == WallType::periodic;
+    for (unsigned int w = 0; w < 2 * dim; ++w)
+      contact[w] = wall_types[w] == WallType::contact;
     unsigned int n_cells = 1;
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -91,6 +92,21 @@ namespace vefs
           }
       }
     return q;
+  }
+
+  template <int dim>
+  double
+  BoxMeshLocator<dim>::distance_beyond_contact_walls(const Point<dim> &p) const
+  {
+    double distance = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        if (contact[2 * d])
+          distance = std::max(distance, cavity.lower_bound(d) - p[d]);
+        if (contact[2 * d + 1])
+          distance = std::max(distance, p[d] - cavity.upper_bound(d));
+      }
+    return distance;
   }
 
   template <int dim>

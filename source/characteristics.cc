@@ -103,14 +103,24 @@ namespace vefs
         nodes[i].point - 0.5 * tau * fields.velocity(nodes[i]));
     const auto at_midpoints = evaluate_at(points, fields, locator);
 
+    std::vector<double> beyond_contact(nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
         Tensor<1, dim> u;
         for (unsigned int d = 0; d < dim; ++d)
           u[d] = at_midpoints[i][d];
-        points[i] = locator.fold_into_cavity(nodes[i].point - tau * u);
+        const Point<dim> foot = nodes[i].point - tau * u;
+        beyond_contact[i]     = locator.distance_beyond_contact_walls(foot);
+        points[i]             = locator.fold_into_cavity(foot);
       }
-    const auto at_feet = evaluate_at(points, fields, locator);
+    auto at_feet = evaluate_at(points, fields, locator);
+    // Liquid that leaves a contact wall leaves empty space behind: a foot
+    // beyond the wall is that far outside the liquid.
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      if (beyond_contact[i] > 0)
+        at_feet[i][TransportedFields<dim>::level_set_component] =
+          std::max(at_feet[i][TransportedFields<dim>::level_set_component],
+                   beyond_contact[i]);
 
     for (unsigned int i = 0; i < nodes.size(); ++i)
       for (unsigned int c = 0; c < fields.n_components; ++c)

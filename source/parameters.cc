@@ -41,7 +41,8 @@ namespace vefs
       {"slip", WallType::slip},
       {"open", WallType::open},
       {"velocity", WallType::velocity},
-      {"periodic", WallType::periodic}};
+      {"periodic", WallType::periodic},
+      {"contact", WallType::contact}};
 
     std::string
     variable_names(const unsigned int dim)
@@ -189,16 +190,20 @@ namespace vefs
           prm.declare_entry(
             wall_names[w],
             defaults[w],
-            Patterns::Selection("no-slip|slip|open|velocity|periodic"),
+            Patterns::Selection("no-slip|slip|open|velocity|periodic|contact"),
             "Condition on the cavity wall " + wall_names[w] + " (boundary id " +
               std::to_string(w) +
               "): no-slip (u = 0), slip (u.n = 0, no tangential "
               "stress), open (zero traction), velocity (u given by the "
               "entry '" +
               wall_names[w] +
-              " velocity') or periodic (the opposite wall must be "
+              " velocity'), periodic (the opposite wall must be "
               "periodic too: the liquid leaving through one wall enters "
-              "through the other). z walls are used in 3D only.");
+              "through the other) or contact (the seed's Signorini-like "
+              "wall: the liquid cannot cross it but may leave it, no "
+              "tangential stress; the contact force and the contact "
+              "length or area go to the statistics). z walls are used in "
+              "3D only.");
           prm.declare_entry(wall_names[w] + " velocity",
                             "0; 0",
                             Patterns::Anything(),

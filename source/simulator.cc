@@ -74,6 +74,16 @@ namespace vefs
                                      return s.non_positive_conformation_points;
                                    });
       }
+    if (flow.has_contact_walls())
+      {
+        statistics_file.add_column("contact_force", [](const auto &s) {
+          return s.contact_force;
+        });
+        statistics_file.add_column(dim == 2 ? "contact_length" : "contact_area",
+                                   [](const auto &s) {
+                                     return s.contact_measure;
+                                   });
+      }
     if (!parameters.probe_point.empty())
       for (unsigned int d = 0; d < dim; ++d)
         statistics_file.add_column(std::string("probe_u_") + "xyz"[d],
@@ -120,11 +130,10 @@ namespace vefs
          const typename Triangulation<dim>::CellStatus) -> unsigned int {
         return cell->material_id() == liquid_material_id ? 4 : 1;
       });
-    locator =
-      std::make_unique<BoxMeshLocator<dim>>(triangulation,
-                                            cavity,
-                                            subdivisions,
-                                            parameters.periodic_directions());
+    locator = std::make_unique<BoxMeshLocator<dim>>(triangulation,
+                                                    cavity,
+                                                    subdivisions,
+                                                    parameters.wall_type);
     triangulation.refine_global(parameters.min_level);
   }
 
@@ -306,19 +315,29 @@ namespace vefs
                                  const double         tau,
                                  const double         expected_cfl)
   {
-    unsigned int iterations;
+    unsigned int iterations = 0;
     {
       TimerOutput::Scope scope(timer, "3 diffusion: setup");
       flow.setup(liquid_fraction, new_time);
     }
-    {
-      TimerOutput::Scope scope(timer, "3 diffusion: assembly");
-      flow.assemble(fields, tau);
-    }
-    {
-      TimerOutput::Scope scope(timer, "3 diffusion: solve");
-      iterations = flow.solve();
-    }
+    // Contact walls: solve again while the contact set changes (design
+    // section 4); a few times at the most.
+    for (unsigned int contact_iteration = 0;; ++contact_iteration)
+      {
+        {
+          TimerOutput::Scope scope(timer, "3 diffusion: assembly");
+          flow.assemble(fields, tau);
+        }
+        {
+          TimerOutput::Scope scope(timer, "3 diffusion: solve");
+          iterations += flow.solve();
+        }
+        if (contact_iteration + 1 == max_contact_iterations)
+          break;
+        TimerOutput::Scope scope(timer, "3 diffusion: contact set");
+        if (!flow.update_contact(fields, tau))
+          break;
+      }
     {
       // The next characteristics trace back through the band around the
       // liquid: give it the new velocity, as far as the surface can move.
@@ -352,7 +371,9 @@ namespace vefs
                    initial_volume,
                    expected_volume,
                    statistics);
-      statistics.dofs = flow.n_dofs();
+      statistics.dofs            = flow.n_dofs();
+      statistics.contact_force   = flow.contact_force();
+      statistics.contact_measure = flow.contact_measure();
       if (rheology.has_stress())
         {
           const StressMeasure stress =

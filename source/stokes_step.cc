@@ -103,6 +103,7 @@ namespace vefs
     , comm(triangulation.get_communicator())
     , dof_handler(triangulation)
     , rheology(parameters)
+    , contact(parameters)
   {
     fe_collection.push_back(FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1));
     fe_collection.push_back(
@@ -135,8 +136,9 @@ namespace vefs
   template <int dim>
   void
   StokesStep<dim>::setup(const Vector<float> &liquid_fraction,
-                         const double         time)
+                         const double         new_time)
   {
+    time = new_time;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         cell->set_active_fe_index(
@@ -159,7 +161,20 @@ namespace vefs
                              owned.get_view(n_u, n_u + n_p)};
     relevant_partitioning = {relevant.get_view(0, n_u),
                              relevant.get_view(n_u, n_u + n_p)};
+    // The velocity block comes first: its indices are the global ones.
+    contact.reset(dof_handler,
+                  owned_partitioning[0],
+                  relevant_partitioning[0],
+                  liquid_index);
+    make_constraints_and_matrices();
+  }
 
+  template <int dim>
+  void
+  StokesStep<dim>::make_constraints_and_matrices()
+  {
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     constraints.clear();
     constraints.reinit(relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
@@ -170,8 +185,7 @@ namespace vefs
                                              d,
                                              constraints);
     make_wall_constraints(time);
-    // A periodic pair may be split between ranks: each must know the
-    // constraints of the other side.
+    contact.add_constraints(constraints);
     constraints.close();
 
     Table<2, DoFTools::Coupling> coupling(dim + 1, dim + 1);
@@ -260,6 +274,7 @@ namespace vefs
               }
             case WallType::open:
             case WallType::periodic:
+            case WallType::contact: // the contact set, see ContactWalls
               break;
           }
       }
@@ -419,6 +434,24 @@ namespace vefs
   }
 
   template <int dim>
+  bool
+  StokesStep<dim>::update_contact(const TransportedFields<dim> &fields,
+                                  const double                  tau)
+  {
+    if (contact.empty())
+      return false;
+    StokesCellSystem<dim> local(parameters,
+                                rheology,
+                                fe_collection[liquid_index],
+                                fields,
+                                tau);
+    if (!contact.update(dof_handler, solution, local, liquid_index))
+      return false;
+    make_constraints_and_matrices();
+    return true;
+  }
+
+  template <int dim>
   double
   StokesStep<dim>::outflow_rate() const
   {
@@ -434,7 +467,11 @@ namespace vefs
       if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index &&
           cell->at_boundary())
         for (const unsigned int f : cell->face_indices())
-          if (cell->at_boundary(f))
+          if (cell->at_boundary(f) &&
+              (parameters.wall_type[cell->face(f)->boundary_id()] ==
+                 WallType::velocity ||
+               parameters.wall_type[cell->face(f)->boundary_id()] ==
+                 WallType::open))
             {
               face_values.reinit(cell, f);
               face_values[velocity].get_function_values(solution, u);

@@ -26,8 +26,7 @@ namespace vefs
     {
       // Jacobi rotations: robust for clustered eigenvalues; sorted in
       // descending order.
-      return eigenvectors(c, SymmetricTensorEigenvectorMethod::jacobi)[2]
-        .first;
+      return eigenvectors(c, SymmetricTensorEigenvectorMethod::jacobi)[2].first;
     }
   } // namespace
 

@@ -4,6 +4,8 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/grid/tria.h>
 
+#include <vefs/parameters.h>
+
 #include <vector>
 
 namespace vefs
@@ -25,7 +27,7 @@ namespace vefs
     BoxMeshLocator(const Triangulation<dim>        &triangulation,
                    const BoundingBox<dim>          &cavity,
                    const std::vector<unsigned int> &subdivisions,
-                   const std::vector<unsigned int> &periodic_directions);
+                   const std::array<WallType, 6>   &wall_types);
 
     /**
      * The point of the cavity that stands for @p p: wrapped around in the
@@ -34,6 +36,13 @@ namespace vefs
      */
     Point<dim>
     fold_into_cavity(const Point<dim> &p) const;
+
+    /**
+     * How far @p p lies beyond a contact wall, 0 if it does not: the liquid
+     * may leave such a wall, and what comes from beyond it is empty.
+     */
+    double
+    distance_beyond_contact_walls(const Point<dim> &p) const;
 
     /** The active cell containing @p p; it may be artificial on this rank. */
     typename Triangulation<dim>::active_cell_iterator
@@ -61,6 +70,7 @@ namespace vefs
     const BoundingBox<dim>                                  cavity;
     std::array<unsigned int, dim>                           n_coarse;
     std::array<bool, dim>                                   periodic;
+    std::array<bool, 2 * dim>                               contact;
     std::vector<typename Triangulation<dim>::cell_iterator> coarse_cells;
   };
 } // namespace vefs

@@ -39,7 +39,8 @@ namespace vefs
     slip,
     open,
     velocity,
-    periodic
+    periodic,
+    contact
   };
 
   /** The regime selected by the material parameters (design section 1). */

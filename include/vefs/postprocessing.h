@@ -49,6 +49,9 @@ namespace vefs
     /** Only with a stress: see StressMeasure. */
     double       min_conformation_eigenvalue      = 1;
     unsigned int non_positive_conformation_points = 0;
+    /** Only with contact walls: see ContactWalls. */
+    double contact_force   = 0;
+    double contact_measure = 0;
     /** Only with a probe point: the velocity there. */
     Tensor<1, dim> probe_velocity;
   };

@@ -97,6 +97,8 @@ namespace vefs
     /** The initial volume plus what entered through the walls so far. */
     double expected_volume = 0;
     Timer  wall_clock;
+    /** Solves per step with contact walls, at the most. */
+    static constexpr unsigned int max_contact_iterations = 10;
   };
 } // namespace vefs
 

@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <vefs/contact_walls.h>
 #include <vefs/parameters.h>
 #include <vefs/rheology.h>
 #include <vefs/transported_fields.h>
@@ -54,6 +55,35 @@ namespace vefs
     solve();
 
     /**
+     * With contact walls: update the contact set from the last solution
+     * (design section 4). Returns true if it changed; then the constraints
+     * and matrices are remade and the step must be assembled and solved
+     * again.
+     */
+    bool
+    update_contact(const TransportedFields<dim> &fields, const double tau);
+
+    bool
+    has_contact_walls() const
+    {
+      return !contact.empty();
+    }
+
+    /** Normal force of the contact walls on the liquid (N; N/m in 2D). */
+    double
+    contact_force() const
+    {
+      return contact.force;
+    }
+
+    /** Length (2D) or area (3D) of contact-wall in contact with liquid. */
+    double
+    contact_measure() const
+    {
+      return contact.contact_measure;
+    }
+
+    /**
      * Write the new velocity into the nodes of liquid cells of @p fields and
      * flag them in @p known.
      */
@@ -94,6 +124,10 @@ namespace vefs
     void
     make_wall_constraints(const double time);
 
+    /** Constraints, sparsity patterns and matrices for the current dofs. */
+    void
+    make_constraints_and_matrices();
+
     /** A liquid cell's face on the free surface or on an open wall. */
     bool
     is_free_surface(const typename DoFHandler<dim>::active_cell_iterator &cell,
@@ -114,6 +148,9 @@ namespace vefs
     BlockVector                         lumped_pressure_mass;
     BlockVector                         solution;
     const Rheology<dim>                 rheology;
+    ContactWalls<dim>                   contact;
+    /** Time of the step being solved (for the wall velocities). */
+    double time = 0;
   };
 } // namespace vefs
 

@@ -1,0 +1,85 @@
+#ifndef vefs_contact_walls_h
+#define vefs_contact_walls_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <vefs/parameters.h>
+#include <vefs/stokes_cell_system.h>
+
+#include <map>
+
+namespace vefs
+{
+  /**
+   * The seed's Signorini-like walls (design section 4): the liquid may leave
+   * a contact wall but never cross it, u.n <= 0, with a compressive normal
+   * traction where u.n = 0. Solved as an active set on the velocity degrees
+   * of freedom normal to the wall: every wet one starts in contact (u.n = 0
+   * imposed); after a solve, one whose reaction pulls the liquid toward the
+   * wall is released, and a released one whose velocity crosses the wall is
+   * put back, until the set stops changing.
+   */
+  template <int dim>
+  class ContactWalls
+  {
+  public:
+    using BlockVector = TrilinosWrappers::MPI::BlockVector;
+
+    explicit ContactWalls(const Parameters &parameters);
+
+    bool
+    empty() const
+    {
+      return walls.empty();
+    }
+
+    /**
+     * After the flow unknowns are distributed: find the degrees of freedom
+     * normal to contact walls on liquid cells; all of them start in contact.
+     */
+    void
+    reset(const DoFHandler<dim> &dof_handler,
+          const IndexSet        &owned,
+          const IndexSet        &relevant,
+          const unsigned int     liquid_index);
+
+    /** u.n = 0 at the degrees of freedom in contact. */
+    void
+    add_constraints(AffineConstraints<double> &constraints) const;
+
+    /**
+     * Reactions from the unconstrained residual of @p solution (cell by
+     * cell with @p local), then the active-set update. Returns true if the
+     * set changed anywhere (then constraints must be made again). Also
+     * measures the contact force and the contact length (area in 3D).
+     */
+    bool
+    update(const DoFHandler<dim> &dof_handler,
+           const BlockVector     &solution,
+           StokesCellSystem<dim> &local,
+           const unsigned int     liquid_index);
+
+    /** Normal force of the walls on the liquid (N, N/m in 2D), >= 0. */
+    double force = 0;
+    /** Length (2D) or area (3D) of the wall in contact with the liquid. */
+    double contact_measure = 0;
+
+  private:
+    using Vector = LinearAlgebra::distributed::Vector<double>;
+
+    /** Boundary ids of the contact walls. */
+    std::vector<types::boundary_id> walls;
+    /**
+     * Locally relevant degrees of freedom normal to a contact wall, with the
+     * sign of the outward normal (-1 on a lower wall, +1 on an upper one).
+     */
+    std::map<types::global_dof_index, int> normal_sign;
+    /** 1 for a degree of freedom in contact, 0 otherwise; ghosted. */
+    Vector in_contact;
+  };
+} // namespace vefs
+
+#endif

@@ -1,0 +1,163 @@
+#include <deal.II/base/mpi.h>
+
+#include <vefs/contact_walls.h>
+
+#include <algorithm>
+
+namespace vefs
+{
+  template <int dim>
+  ContactWalls<dim>::ContactWalls(const Parameters &parameters)
+  {
+    for (unsigned int w = 0; w < 2 * dim; ++w)
+      if (parameters.wall_type[w] == WallType::contact)
+        walls.push_back(w);
+  }
+
+  template <int dim>
+  void
+  ContactWalls<dim>::reset(const DoFHandler<dim> &dof_handler,
+                           const IndexSet        &owned,
+                           const IndexSet        &relevant,
+                           const unsigned int     liquid_index)
+  {
+    normal_sign.clear();
+    in_contact.reinit(owned,
+                      relevant,
+                      dof_handler.get_triangulation().get_communicator());
+    if (walls.empty())
+      return;
+    std::vector<types::global_dof_index> face_dofs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial() && cell->active_fe_index() == liquid_index &&
+          cell->at_boundary())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f) &&
+              std::count(walls.begin(),
+                         walls.end(),
+                         cell->face(f)->boundary_id()) > 0)
+            {
+              const types::boundary_id wall = cell->face(f)->boundary_id();
+              const auto              &fe   = cell->get_fe();
+              face_dofs.resize(fe.n_dofs_per_face());
+              cell->face(f)->get_dof_indices(face_dofs, liquid_index);
+              for (unsigned int k = 0; k < face_dofs.size(); ++k)
+                if (fe.face_system_to_component_index(k).first == wall / 2)
+                  normal_sign[face_dofs[k]] = wall % 2 == 0 ? -1 : 1;
+            }
+    // Every wet degree of freedom starts in contact.
+    for (const auto &entry : normal_sign)
+      if (owned.is_element(entry.first))
+        in_contact(entry.first) = 1;
+    in_contact.update_ghost_values();
+  }
+
+  template <int dim>
+  void
+  ContactWalls<dim>::add_constraints(
+    AffineConstraints<double> &constraints) const
+  {
+    for (const auto &entry : normal_sign)
+      if (in_contact(entry.first) == 1 &&
+          !constraints.is_constrained(entry.first))
+        constraints.add_line(entry.first);
+  }
+
+  template <int dim>
+  bool
+  ContactWalls<dim>::update(const DoFHandler<dim> &dof_handler,
+                            const BlockVector     &solution,
+                            StokesCellSystem<dim> &local,
+                            const unsigned int     liquid_index)
+  {
+    const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
+    // The reaction of a constrained degree of freedom is its residual in
+    // the equations without the constraint: int (S n) . phi_i over the
+    // wall, the force the wall puts on the liquid there.
+    Vector reaction;
+    reaction.reinit(in_contact);
+    std::vector<types::global_dof_index> dofs;
+    dealii::Vector<double>               values, residual;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index &&
+          cell->at_boundary())
+        {
+          bool on_contact_wall = false;
+          for (const unsigned int f : cell->face_indices())
+            if (cell->at_boundary(f) &&
+                std::count(walls.begin(),
+                           walls.end(),
+                           cell->face(f)->boundary_id()) > 0)
+              on_contact_wall = true;
+          if (!on_contact_wall)
+            continue;
+          local.compute(cell);
+          dofs.resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          values.reinit(dofs.size());
+          residual.reinit(dofs.size());
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            values(i) = solution(dofs[i]);
+          local.matrix.vmult(residual, values);
+          residual -= local.rhs;
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (normal_sign.count(dofs[i]) > 0)
+              reaction(dofs[i]) += residual(i);
+        }
+    reaction.compress(VectorOperation::add);
+
+    bool changed = false;
+    force        = 0;
+    for (const auto &[dof, sign] : normal_sign)
+      if (in_contact.locally_owned_elements().is_element(dof))
+        {
+          if (in_contact(dof) == 1)
+            {
+              // A wall pushes; one that would pull lets the liquid go.
+              if (sign * reaction(dof) > 0)
+                {
+                  in_contact(dof) = 0;
+                  changed         = true;
+                }
+              else
+                force -= sign * reaction(dof);
+            }
+          else if (sign * solution(dof) > 0)
+            {
+              // Released, but the liquid would cross the wall there.
+              in_contact(dof) = 1;
+              changed         = true;
+            }
+        }
+    in_contact.update_ghost_values();
+    force = Utilities::MPI::sum(force, comm);
+
+    // Wall faces of liquid cells all of whose normal unknowns are in
+    // contact.
+    contact_measure = 0;
+    std::vector<types::global_dof_index> face_dofs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index &&
+          cell->at_boundary())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f) &&
+              std::count(walls.begin(),
+                         walls.end(),
+                         cell->face(f)->boundary_id()) > 0)
+            {
+              face_dofs.resize(cell->get_fe().n_dofs_per_face());
+              cell->face(f)->get_dof_indices(face_dofs, liquid_index);
+              bool touching = true;
+              for (const auto dof : face_dofs)
+                if (normal_sign.count(dof) > 0 && in_contact(dof) != 1)
+                  touching = false;
+              if (touching)
+                contact_measure += cell->face(f)->measure();
+            }
+    contact_measure = Utilities::MPI::sum(contact_measure, comm);
+    return Utilities::MPI::logical_or(changed, comm);
+  }
+
+  template class ContactWalls<2>;
+  template class ContactWalls<3>;
+} // namespace vefs
