@@ -1,0 +1,48 @@
+#!/usr/bin/env python3
+"""Plots of a bouncing scene (prm/bouncing_ball_2d_stiff.prm): centroid
+height, contact force and contact length, and the kinetic, potential and
+elastic energies with their sum, against time.
+
+Usage: /usr/bin/python3 scripts/plot_bounce.py OUTPUT_DIR PNG
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from vefs_stats import read_statistics  # noqa: E402
+
+import matplotlib  # noqa: E402
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main(output_dir, png):
+    s = read_statistics(output_dir)
+    t = s["time"]
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
+    axes[0].plot(t, s["centroid_y"])
+    axes[0].set_ylabel("centroid height (m)")
+    axes[1].plot(t, s["contact_force"], label="contact force (N/m)")
+    ax = axes[1].twinx()
+    ax.plot(t, s["contact_length"], "C1", label="contact length (m)")
+    axes[1].set_ylabel("contact force (N/m)")
+    ax.set_ylabel("contact length (m)", color="C1")
+    potential = [p - s["potential_energy"][-1] for p in s["potential_energy"]]
+    total = [k + p + e for k, p, e in zip(s["kinetic_energy"], potential,
+                                          s["elastic_energy"])]
+    axes[2].plot(t, s["kinetic_energy"], label="kinetic")
+    axes[2].plot(t, potential, label="potential (from the last value)")
+    axes[2].plot(t, s["elastic_energy"], label="elastic")
+    axes[2].plot(t, total, "k", label="sum")
+    axes[2].set_ylabel("energy (J/m)")
+    axes[2].legend(fontsize=7)
+    for a in axes:
+        a.set_xlabel("t (s)")
+        a.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    print("wrote %s" % png)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2])
