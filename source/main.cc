@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
+#include <vefs/parameter_file.h>
 #include <vefs/parameters.h>
 #include <vefs/simulator.h>
 #include <vefs/stokes_step.h>
@@ -118,11 +119,14 @@ main(int argc, char *argv[])
     {
       if (!file.empty())
         {
-          if (!std::ifstream(file))
-            throw InputError("cannot open the parameter file");
+          check_parameter_file(file);
           prm.parse_input(file);
         }
       parameters.parse(prm);
+      if (root)
+        for (const auto &warning : parameters.warnings)
+          std::cerr << "vefs: warning in " << where << ": " << warning
+                    << std::endl;
       parameters.check_for_ranks(
         Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
     }

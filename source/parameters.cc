@@ -1,9 +1,10 @@
-#include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>
-#include <deal.II/lac/vector.h>
 
+#include <vefs/expression_check.h>
 #include <vefs/parameters.h>
+#include <vefs/resource_limits.h>
 
+#include <cmath>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -44,53 +45,22 @@ namespace vefs
       {"periodic", WallType::periodic},
       {"contact", WallType::contact}};
 
-    std::string
-    variable_names(const unsigned int dim)
+    /**
+     * The times at which the run evaluates time-dependent expressions:
+     * every step and mid-step with the fixed time step, else (or beyond
+     * 200 steps) 400 equal parts of the run.
+     */
+    std::vector<double>
+    run_times(const Parameters &p)
     {
-      return dim == 2 ? "x,y,t" : "x,y,z,t";
-    }
-
-    /** Parse a muParser expression once so that a typo stops the run early. */
-    template <int dim>
-    void
-    check_expression(const std::string &expression,
-                     const unsigned int n_components,
-                     const std::string &entry)
-    {
-      const auto parts = Utilities::split_string_list(expression, ';');
-      require(parts.size() == n_components,
-              entry,
-              "needs " + std::to_string(n_components) +
-                " expression(s) separated by ';', got '" + expression + "'");
-      // muParser reports its own diagnosis on the standard streams; the
-      // user gets ours, naming the entry, instead.
-      std::ostringstream silenced;
-      auto *const        out_buffer = std::cout.rdbuf(silenced.rdbuf());
-      auto *const        err_buffer = std::cerr.rdbuf(silenced.rdbuf());
-      bool               valid      = true;
-      try
-        {
-          FunctionParser<dim> function(n_components);
-          function.initialize(variable_names(dim),
-                              parts,
-                              {{"pi", numbers::PI}},
-                              true);
-          Vector<double> value(n_components);
-          function.vector_value(Point<dim>(), value);
-        }
-      catch (...)
-        {
-          valid = false;
-        }
-      std::cout.rdbuf(out_buffer);
-      std::cerr.rdbuf(err_buffer);
-      if (!valid)
-        throw InputError(
-          entry_error(entry,
-                      "'" + expression +
-                        "' is not a valid muParser expression in the "
-                        "variables " +
-                        variable_names(dim)));
+      const double steps = std::ceil(p.end_time / p.time_step);
+      const double dt    = steps <= 200 ? p.time_step / 2 : p.end_time / 400;
+      std::vector<double> times;
+      // Multiples, not sums, of dt: the step times exactly.
+      for (unsigned int k = 0; k * dt < p.end_time; ++k)
+        times.push_back(k * dt);
+      times.push_back(p.end_time);
+      return times;
     }
 
     /** Every muParser expression the scene uses, with its entry name. */
@@ -98,29 +68,47 @@ namespace vefs
     void
     check_expressions(const Parameters &p)
     {
+      const ExpressionSampling cavity{p.cavity_lower, p.cavity_upper, {0.}};
+      ExpressionSampling       over_time = cavity;
+      over_time.times                    = run_times(p);
       for (unsigned int w = 0; w < 2 * dim; ++w)
         if (p.wall_type[w] == WallType::velocity)
-          check_expression<dim>(p.wall_velocity[w],
-                                dim,
-                                "Walls/" + wall_names[w] + " velocity");
-      check_expression<dim>(p.initial_velocity, dim, "Initial liquid/Velocity");
+          {
+            // Sampled on the wall only: a pole beyond it does no harm.
+            ExpressionSampling wall = over_time;
+            const double       x =
+              w % 2 == 0 ? p.cavity_lower[w / 2] : p.cavity_upper[w / 2];
+            wall.lower[w / 2] = wall.upper[w / 2] = x;
+            check_expression<dim>(p.wall_velocity[w],
+                                  dim,
+                                  "Walls/" + wall_names[w] + " velocity",
+                                  wall);
+          }
+      check_expression<dim>(p.initial_velocity,
+                            dim,
+                            "Initial liquid/Velocity",
+                            cavity);
       if (!p.initial_stress.empty())
         check_expression<dim>(p.initial_stress,
                               dim * (dim + 1) / 2,
-                              "Initial liquid/Stress");
+                              "Initial liquid/Stress",
+                              cavity);
       if (p.initial_shape == "expression")
         check_expression<dim>(p.level_set_expression,
                               1,
-                              "Initial liquid/Level set expression");
+                              "Initial liquid/Level set expression",
+                              cavity);
       if (p.velocity_is_prescribed())
         check_expression<dim>(p.prescribed_velocity,
                               dim,
-                              "Transport/Prescribed velocity");
+                              "Transport/Prescribed velocity",
+                              over_time);
       if (!p.exact_final_level_set.empty() &&
           p.exact_final_level_set != "initial")
         check_expression<dim>(p.exact_final_level_set,
                               1,
-                              "Transport/Exact final level set");
+                              "Transport/Exact final level set",
+                              {p.cavity_lower, p.cavity_upper, {p.end_time}});
     }
   } // namespace
 
@@ -159,6 +147,32 @@ namespace vefs
                         "If positive, the time step is chosen so that "
                         "tau max|u| / h_min equals this number (the method "
                         "is stable for CFL numbers well above 1).");
+      prm.declare_entry("Maximum steps",
+                        "100000",
+                        Patterns::Integer(1),
+                        "Largest number of time steps: a scene whose End "
+                        "time / Time step exceeds it is refused before any "
+                        "work, and a run whose CFL-limited steps exceed it "
+                        "stops.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Health check");
+    {
+      prm.declare_entry("Maximum volume change",
+                        "0.2",
+                        Patterns::Double(0),
+                        "The run stops (exit status 1) when the relative "
+                        "volume change |volume_change| of the statistics "
+                        "exceeds this bound: the liquid is no longer the "
+                        "one of the scene.");
+      prm.declare_entry("Maximum CFL",
+                        "50",
+                        Patterns::Double(0),
+                        "The run stops (exit status 1) before a step whose "
+                        "CFL number tau max|u| / h_min exceeds this bound: "
+                        "the velocity has blown up or the time step is far "
+                        "too large.");
     }
     prm.leave_subsection();
 
@@ -431,9 +445,15 @@ namespace vefs
     gravity          = to_doubles(prm.get("Gravity"));
 
     prm.enter_subsection("Time");
-    end_time   = prm.get_double("End time");
-    time_step  = prm.get_double("Time step");
-    target_cfl = prm.get_double("Target CFL");
+    end_time      = prm.get_double("End time");
+    time_step     = prm.get_double("Time step");
+    target_cfl    = prm.get_double("Target CFL");
+    maximum_steps = prm.get_integer("Maximum steps");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Health check");
+    max_volume_change = prm.get_double("Maximum volume change");
+    max_cfl           = prm.get_double("Maximum CFL");
     prm.leave_subsection();
 
     prm.enter_subsection("Cavity");
@@ -540,8 +560,9 @@ namespace vefs
   }
 
   void
-  Parameters::check() const
+  Parameters::check()
   {
+    warnings.clear();
     const std::string dim_text      = std::to_string(dimension);
     auto              require_point = [&](const std::vector<double> &p,
                              const std::string         &entry) {
@@ -619,6 +640,20 @@ namespace vefs
           require(box_lower[d] < box_upper[d],
                   "Initial liquid/Box upper corner",
                   "must exceed 'Box lower corner' in every coordinate");
+        for (unsigned int d = 0; d < dimension; ++d)
+          require(box_lower[d] < cavity_upper[d] &&
+                    box_upper[d] > cavity_lower[d],
+                  "Initial liquid/Box upper corner",
+                  "the liquid box lies outside the cavity");
+        for (unsigned int d = 0; d < dimension; ++d)
+          if (box_lower[d] < cavity_lower[d] || box_upper[d] > cavity_upper[d])
+            {
+              warnings.push_back(
+                entry_error("Initial liquid/Box upper corner",
+                            "the liquid box reaches beyond the cavity; only "
+                            "its part inside the cavity is liquid"));
+              break;
+            }
       }
     else if (initial_shape == "ball")
       {
@@ -626,12 +661,24 @@ namespace vefs
         require(ball_radius > 0,
                 "Initial liquid/Ball radius",
                 "must be positive");
+        for (unsigned int d = 0; d < dimension; ++d)
+          if (ball_center[d] - ball_radius < cavity_lower[d] ||
+              ball_center[d] + ball_radius > cavity_upper[d])
+            {
+              warnings.push_back(
+                entry_error("Initial liquid/Ball radius",
+                            "the liquid ball reaches beyond the cavity; only "
+                            "its part inside the cavity is liquid"));
+              break;
+            }
       }
 
     require(min_level <= bulk_level && bulk_level <= max_level,
             "Mesh refinement/Bulk level",
             "levels must satisfy Minimum level <= Bulk level <= Maximum "
             "level");
+
+    check_resources(*this);
 
     if (dimension == 2)
       check_expressions<2>(*this);

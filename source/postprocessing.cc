@@ -114,8 +114,9 @@ namespace vefs
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         file.open(directory + "/statistics");
-        AssertThrow(file,
-                    ExcMessage("Cannot write " + directory + "/statistics"));
+        if (!file)
+          throw InputError("entry 'Output directory': cannot write '" +
+                           directory + "/statistics'");
       }
     using S = StepStatistics<dim>;
     add_column("step", [](const S &s) { return s.step; });

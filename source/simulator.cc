@@ -4,6 +4,7 @@
 #include <vefs/characteristics.h>
 #include <vefs/field_extension.h>
 #include <vefs/free_surface.h>
+#include <vefs/health_check.h>
 #include <vefs/initial_liquid.h>
 #include <vefs/redistancing.h>
 #include <vefs/simulator.h>
@@ -11,28 +12,17 @@
 
 #include <filesystem>
 #include <iomanip>
+#include <sstream>
 
 namespace vefs
 {
-  namespace
-  {
-    /** The output directory exists before any rank writes into it. */
-    const std::string &
-    prepared_directory(const std::string &directory, const MPI_Comm comm)
-    {
-      if (Utilities::MPI::this_mpi_process(comm) == 0)
-        std::filesystem::create_directories(directory);
-      MPI_Barrier(comm);
-      return directory;
-    }
-  } // namespace
-
   template <int dim>
   Simulator<dim>::Simulator(const Parameters       &parameters,
                             const ParameterHandler &prm)
     : parameters(parameters)
     , rheology(parameters)
     , comm(MPI_COMM_WORLD)
+    , output(parameters.output_directory, comm)
     , pcout(std::cout,
             parameters.verbose && Utilities::MPI::this_mpi_process(comm) == 0)
     , timer(comm,
@@ -48,8 +38,7 @@ namespace vefs
              rheology.has_stress(),
              parameters.periodic_directions())
     , flow(parameters, triangulation)
-    , statistics_file(prepared_directory(parameters.output_directory, comm),
-                      comm)
+    , statistics_file(output.path(), comm)
     , visualization(parameters.output_directory)
   {
     if (parameters.velocity_is_prescribed())
@@ -156,6 +145,11 @@ namespace vefs
       }
     initial_volume  = measure_liquid(fields).volume;
     expected_volume = initial_volume;
+    if (!std::isfinite(initial_volume) || !fields_are_finite(fields))
+      throw InputError("entry 'Initial liquid/Shape': the initial level set, "
+                       "velocity or stress is not finite somewhere in the "
+                       "cavity (check 'Initial liquid/Level set expression', "
+                       "'Initial liquid/Velocity', 'Initial liquid/Stress')");
     if (!(initial_volume > 0))
       throw InputError("entry 'Initial liquid/Shape': the initial liquid "
                        "does not intersect the cavity");
@@ -255,10 +249,19 @@ namespace vefs
             ? choose_prescribed_time_step(statistics.time)
             : std::min(choose_time_step(statistics.max_velocity),
                        parameters.end_time - statistics.time);
+        const double cfl =
+          tau * statistics.max_velocity / levels.finest_cell_size;
+        // Checked before the step, while the state is still good.
+        const std::string problem = step_problem(parameters,
+                                                 statistics.step + 1,
+                                                 tau,
+                                                 cfl,
+                                                 statistics.max_velocity);
+        if (!problem.empty())
+          stop(statistics.step + 1, statistics, problem, liquid_fraction, true);
         ++statistics.step;
         statistics.tau = tau;
-        statistics.cfl =
-          tau * statistics.max_velocity / levels.finest_cell_size;
+        statistics.cfl = cfl;
         // The next step moves the surface about as far as this one.
         const double expected_cfl =
           std::max(parameters.target_cfl, statistics.cfl);
@@ -296,10 +299,25 @@ namespace vefs
           }
         else
           {
-            statistics.linear_iterations = diffusion_step(liquid_fraction,
-                                                          statistics.time + tau,
-                                                          tau,
-                                                          expected_cfl);
+            std::string failure;
+            try
+              {
+                statistics.linear_iterations =
+                  diffusion_step(liquid_fraction,
+                                 statistics.time + tau,
+                                 tau,
+                                 expected_cfl);
+              }
+            catch (const SolverError &error)
+              {
+                failure = error.what();
+              }
+            if (!failure.empty())
+              stop(statistics.step,
+                   statistics,
+                   failure,
+                   liquid_fraction,
+                   false);
             expected_volume -= tau * flow.outflow_rate();
           }
 
@@ -403,8 +421,14 @@ namespace vefs
                                 levels.finest_cell_size);
         }
       statistics.wall_time = wall_clock.wall_time();
-      statistics_file.write(statistics);
     }
+    {
+      TimerOutput::Scope scope(timer, "health check");
+      const std::string problem = state_problem(parameters, fields, statistics);
+      if (!problem.empty())
+        stop(statistics.step, statistics, problem, liquid_fraction, false);
+    }
+    statistics_file.write(statistics);
 
     if (parameters.output_interval > 0 &&
         (statistics.step % parameters.output_interval == 0 ||
@@ -412,6 +436,7 @@ namespace vefs
       {
         TimerOutput::Scope scope(timer, "output");
         visualization.write(fields, flow, liquid_fraction, statistics.time);
+        last_output_step = statistics.step;
       }
 
     if (statistics.step == 0)
@@ -427,6 +452,34 @@ namespace vefs
           << std::setw(7) << statistics.cells << "  " << std::setprecision(3)
           << per_step << " s/step  ~" << std::setprecision(3) << left
           << " s left" << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::stop(const unsigned int         step,
+                       const StepStatistics<dim> &statistics,
+                       const std::string         &problem,
+                       const Vector<float>       &liquid_fraction,
+                       const bool                 state_is_good)
+  {
+    // Keep the state the run ended with for a look, if it can be shown.
+    const bool written = state_is_good && last_output_step == statistics.step;
+    if (!written && fields_are_finite(fields))
+      visualization.write(fields, flow, liquid_fraction, statistics.time);
+    std::string what = problem;
+    while (!what.empty() && what.back() == '.')
+      what.pop_back();
+    std::ostringstream message;
+    message << "step " << step << " (t = " << statistics.time << "): " << what;
+    if (step > 0)
+      message << ". The statistics end with step " << step - 1;
+    if (!visualization.last_file().empty())
+      message << ", the visualization with " << parameters.output_directory
+              << "/" << visualization.last_file()
+              << (state_is_good ? " (the last good state)"
+                                : " (the last finite state)");
+    message << ".";
+    throw SolverError(message.str());
   }
 
   template <int dim>

@@ -402,7 +402,13 @@ namespace vefs
 
     BlockVector distributed(owned_partitioning, comm);
     constraints.set_zero(distributed);
-    const double              rhs_norm = system_rhs.l2_norm();
+    const double rhs_norm = system_rhs.l2_norm();
+    // An overflowing right-hand side would make the tolerance infinite and
+    // the zero vector a "converged" solution.
+    if (!std::isfinite(rhs_norm))
+      throw SolverError("the right-hand side of the Stokes step is not "
+                        "finite; check 'Gravity', 'Material/Density', the "
+                        "'Walls' velocities and 'Time/Time step'");
     SolverControl             control(parameters.solver_max_iterations,
                           std::max(parameters.solver_tolerance * rhs_norm,
                                    1e-300));
@@ -427,8 +433,10 @@ namespace vefs
         throw SolverError(message.str());
       }
     constraints.distribute(distributed);
-    AssertThrow(std::isfinite(distributed.l2_norm()),
-                ExcMessage("The Stokes solution is not finite."));
+    if (!std::isfinite(distributed.l2_norm()))
+      throw SolverError("the Stokes solution is not finite; check "
+                        "'Gravity', the 'Walls' velocities and 'Time/Time "
+                        "step'");
     solution = distributed;
     return control.last_step();
   }

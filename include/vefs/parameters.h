@@ -85,9 +85,14 @@ namespace vefs
     unsigned int dimension;
     std::string  output_directory;
 
-    double end_time;
-    double time_step;
-    double target_cfl;
+    double       end_time;
+    double       time_step;
+    double       target_cfl;
+    unsigned int maximum_steps;
+
+    /** Bounds of the health check done after every step. */
+    double max_volume_change;
+    double max_cfl;
 
     std::vector<double>       cavity_lower;
     std::vector<double>       cavity_upper;
@@ -146,9 +151,12 @@ namespace vefs
     unsigned int output_interval;
     bool         verbose;
 
+    /** Doubtful but accepted input, "entry 'X': what", for the user. */
+    std::vector<std::string> warnings;
+
   private:
     void
-    check() const;
+    check();
   };
 } // namespace vefs
 

@@ -8,6 +8,7 @@
 
 #include <vefs/box_mesh_locator.h>
 #include <vefs/mesh_adaptation.h>
+#include <vefs/output_directory.h>
 #include <vefs/parameters.h>
 #include <vefs/postprocessing.h>
 #include <vefs/rheology.h>
@@ -74,13 +75,28 @@ namespace vefs
       return statistics.time >= parameters.end_time * (1 - 1e-12);
     }
 
+    /** Measure, check the health of and write the state of a step. */
     void
     report(StepStatistics<dim> &statistics,
            const Vector<float> &liquid_fraction);
 
-    const Parameters                         &parameters;
-    const Rheology<dim>                       rheology;
-    const MPI_Comm                            comm;
+    /**
+     * Stop the run at @p step with @p problem: write the current state if
+     * it is finite (@p state_is_good: it passed every check) and throw
+     * SolverError naming the step and what was kept.
+     */
+    [[noreturn]] void
+    stop(const unsigned int         step,
+         const StepStatistics<dim> &statistics,
+         const std::string         &problem,
+         const Vector<float>       &liquid_fraction,
+         const bool                 state_is_good);
+
+    const Parameters   &parameters;
+    const Rheology<dim> rheology;
+    const MPI_Comm      comm;
+    /** Before the timer: its destructor must not see a failure here. */
+    OutputDirectory                           output;
     ConditionalOStream                        pcout;
     mutable TimerOutput                       timer;
     parallel::distributed::Triangulation<dim> triangulation;
@@ -95,8 +111,9 @@ namespace vefs
     std::unique_ptr<Function<dim>>            exact_final_level_set;
     double                                    initial_volume = 0;
     /** The initial volume plus what entered through the walls so far. */
-    double expected_volume = 0;
-    Timer  wall_clock;
+    double       expected_volume  = 0;
+    unsigned int last_output_step = numbers::invalid_unsigned_int;
+    Timer        wall_clock;
     /** Solves per step with contact walls, at the most. */
     static constexpr unsigned int max_contact_iterations = 10;
   };

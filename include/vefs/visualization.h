@@ -26,6 +26,13 @@ namespace vefs
           const Vector<float>          &liquid_fraction,
           const double                  time);
 
+    /** The .pvtu file written last, relative to the directory; or "". */
+    std::string
+    last_file() const
+    {
+      return series.empty() ? "" : series.back().second;
+    }
+
   private:
     const std::string                           directory;
     std::vector<std::pair<double, std::string>> series;

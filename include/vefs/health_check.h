@@ -1,0 +1,40 @@
+#ifndef vefs_health_check_h
+#define vefs_health_check_h
+
+#include <vefs/parameters.h>
+#include <vefs/postprocessing.h>
+#include <vefs/transported_fields.h>
+
+#include <string>
+
+namespace vefs
+{
+  /**
+   * The checks done at every step (design: a run never ends with exit 0
+   * and results that are not finite). Each returns what is wrong, naming
+   * the quantity and the entries to change, or an empty string; all are
+   * collective over the ranks of @p fields and agree on every rank.
+   */
+
+  /** Whether the level set, velocity and stress are finite everywhere. */
+  template <int dim>
+  bool
+  fields_are_finite(const TransportedFields<dim> &fields);
+
+  /** Before a step of length @p tau: its CFL number and the step count. */
+  std::string
+  step_problem(const Parameters  &parameters,
+               const unsigned int step,
+               const double       tau,
+               const double       cfl,
+               const double       max_velocity);
+
+  /** After a step: the fields and the statistics of @p statistics. */
+  template <int dim>
+  std::string
+  state_problem(const Parameters             &parameters,
+                const TransportedFields<dim> &fields,
+                const StepStatistics<dim>    &statistics);
+} // namespace vefs
+
+#endif

@@ -1,0 +1,40 @@
+#ifndef vefs_output_directory_h
+#define vefs_output_directory_h
+
+#include <mpi.h>
+
+#include <string>
+
+namespace vefs
+{
+  /**
+   * The 'Output directory' of a run, held for the lifetime of this object:
+   * created if missing, locked by the file vefs.lock (a second run into
+   * the same directory is refused), and cleared of the results of an
+   * earlier run (solution*.vtu/pvtu, solution.pvd, statistics,
+   * parameters.prm), so that the files of two runs never mix. Every
+   * problem throws InputError on all ranks.
+   */
+  class OutputDirectory
+  {
+  public:
+    OutputDirectory(const std::string &directory, const MPI_Comm comm);
+    ~OutputDirectory();
+
+    OutputDirectory(const OutputDirectory &) = delete;
+    OutputDirectory &
+    operator=(const OutputDirectory &) = delete;
+
+    const std::string &
+    path() const
+    {
+      return directory;
+    }
+
+  private:
+    const std::string directory;
+    bool              locked = false;
+  };
+} // namespace vefs
+
+#endif

@@ -1,0 +1,117 @@
+#include <deal.II/base/mpi.h>
+
+#include <vefs/health_check.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace vefs
+{
+  namespace
+  {
+    const std::string smaller_steps =
+      "reduce 'Time/Time step' or set 'Time/Target CFL'";
+
+    std::string
+    number(const double value)
+    {
+      if (std::isnan(value))
+        return "NaN";
+      std::ostringstream text;
+      text.precision(3);
+      text << value;
+      return text.str();
+    }
+  } // namespace
+
+  template <int dim>
+  bool
+  fields_are_finite(const TransportedFields<dim> &fields)
+  {
+    bool finite = true;
+    for (unsigned int i = 0; i < fields.fields.locally_owned_size(); ++i)
+      finite = finite && std::isfinite(fields.fields.local_element(i));
+    return dealii::Utilities::MPI::min(
+             static_cast<unsigned int>(finite),
+             fields.dof_handler.get_triangulation().get_communicator()) == 1;
+  }
+
+  std::string
+  step_problem(const Parameters  &p,
+               const unsigned int step,
+               const double       tau,
+               const double       cfl,
+               const double       max_velocity)
+  {
+    if (!std::isfinite(cfl) || !std::isfinite(max_velocity))
+      return "the largest speed is not finite: the flow has blown up; " +
+             smaller_steps;
+    if (cfl > p.max_cfl)
+      return "the CFL number " + number(cfl) + " (largest speed " +
+             number(max_velocity) +
+             " m/s) exceeds 'Health check/Maximum CFL' = " + number(p.max_cfl) +
+             "; " + smaller_steps + ", or raise the bound";
+    if (step > p.maximum_steps)
+      return "more than 'Time/Maximum steps' = " +
+             std::to_string(p.maximum_steps) + " steps (time step " +
+             number(tau) +
+             " s); raise 'Time/Target CFL' or 'Time/Maximum "
+             "steps'";
+    if (!(tau > 0))
+      return "the time step " + number(tau) +
+             " is not positive; check "
+             "'Time/Time step' and 'Time/Target CFL'";
+    return "";
+  }
+
+  template <int dim>
+  std::string
+  state_problem(const Parameters             &p,
+                const TransportedFields<dim> &fields,
+                const StepStatistics<dim>    &s)
+  {
+    if (!fields_are_finite(fields))
+      return "the fields (level set, velocity or stress) are not finite: the "
+             "flow has blown up; " +
+             smaller_steps;
+    const std::vector<std::pair<std::string, double>> measured = {
+      {"volume", s.volume},
+      {"volume_change", s.volume_change},
+      {"kinetic_energy", s.kinetic_energy},
+      {"potential_energy", s.potential_energy},
+      {"elastic_energy", s.elastic_energy},
+      {"max_velocity", s.max_velocity},
+      {"surface_area", s.surface_area},
+      {"centroid", s.centroid.norm()},
+      {"probe_velocity", s.probe_velocity.norm()},
+      {"min_conformation_eigenvalue", s.min_conformation_eigenvalue}};
+    for (const auto &[name, value] : measured)
+      if (!std::isfinite(value))
+        return "the statistic " + name + " is " + number(value) +
+               ": the flow has blown up; " + smaller_steps;
+    if (!(s.volume > 0) || s.liquid_cells == 0)
+      return "the liquid has vanished (volume " + number(s.volume) +
+             "): it left through open walls ('Walls/...') or was lost; "
+             "nothing is left to simulate";
+    if (std::abs(s.volume_change) > p.max_volume_change)
+      return "the volume change " + number(s.volume_change) +
+             " exceeds 'Health check/Maximum volume change' = " +
+             number(p.max_volume_change) + "; " + smaller_steps +
+             ", raise the 'Mesh refinement' levels, set 'Mesh refinement/"
+             "Volume correction' = true, or raise the bound";
+    return "";
+  }
+
+  template bool
+  fields_are_finite<2>(const TransportedFields<2> &);
+  template bool
+  fields_are_finite<3>(const TransportedFields<3> &);
+  template std::string
+  state_problem<2>(const Parameters &,
+                   const TransportedFields<2> &,
+                   const StepStatistics<2> &);
+  template std::string
+  state_problem<3>(const Parameters &,
+                   const TransportedFields<3> &,
+                   const StepStatistics<3> &);
+} // namespace vefs

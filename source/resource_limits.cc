@@ -1,0 +1,96 @@
+#include <vefs/resource_limits.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace vefs
+{
+  namespace
+  {
+    /** MemAvailable of /proc/meminfo in bytes; 0 if unknown. */
+    double
+    available_memory()
+    {
+      std::ifstream meminfo("/proc/meminfo");
+      std::string   key;
+      double        kilobytes;
+      std::string   unit;
+      while (meminfo >> key >> kilobytes >> unit)
+        if (key == "MemAvailable:")
+          return 1024 * kilobytes;
+      return 0;
+    }
+
+    std::string
+    rounded(const double value)
+    {
+      std::ostringstream text;
+      text.precision(2);
+      text << value;
+      return text.str();
+    }
+  } // namespace
+
+  double
+  estimated_cells(const Parameters &p)
+  {
+    const unsigned int  dim          = p.dimension;
+    double              coarse_cells = 1, smallest_coarse_size = 1e300;
+    std::vector<double> extent(dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        extent[d] = p.cavity_upper[d] - p.cavity_lower[d];
+        coarse_cells *= p.coarse_subdivisions[d];
+        smallest_coarse_size =
+          std::min(smallest_coarse_size, extent[d] / p.coarse_subdivisions[d]);
+      }
+    // The liquid may fill the cavity at the bulk level ...
+    const double bulk = coarse_cells * std::pow(2., dim * p.bulk_level);
+    // ... and its surface, at most about the largest cross-section of the
+    // cavity, carries a band of finest cells as wide as the band width
+    // (or CFL + 2) on either side, twice that with the grading around it.
+    std::sort(extent.begin(), extent.end());
+    double cross_section = 1;
+    for (unsigned int d = 1; d < dim; ++d)
+      cross_section *= extent[d];
+    const double h     = smallest_coarse_size / std::pow(2., p.max_level);
+    const double width = std::max(p.band_width, p.target_cfl + 2);
+    const double band =
+      2 * 2 * width * cross_section / std::pow(h, static_cast<int>(dim) - 1);
+    return bulk + band;
+  }
+
+  double
+  bytes_per_cell(const unsigned int dimension)
+  {
+    return dimension == 2 ? 8e3 : 40e3;
+  }
+
+  void
+  check_resources(const Parameters &p)
+  {
+    const double steps = std::ceil(p.end_time / p.time_step * (1 - 1e-12));
+    if (steps > p.maximum_steps)
+      throw InputError(
+        "entry 'Time/Time step': 'Time/End time' / 'Time/Time step' = " +
+        rounded(steps) + " steps, more than 'Time/Maximum steps' = " +
+        std::to_string(p.maximum_steps) +
+        "; raise the time step (with 'Time/Target CFL' it is the largest "
+        "step allowed) or 'Time/Maximum steps'");
+
+    const double cells  = estimated_cells(p);
+    const double needed = cells * bytes_per_cell(p.dimension);
+    const double memory = available_memory();
+    if (memory > 0 && needed > memory)
+      throw InputError(
+        "entry 'Mesh refinement/Maximum level': the levels (bulk " +
+        std::to_string(p.bulk_level) + ", maximum " +
+        std::to_string(p.max_level) + ") may need about " + rounded(cells) +
+        " cells and " + rounded(needed / 1e9) +
+        " GB of memory, more than the " + rounded(memory / 1e9) +
+        " GB available (MemAvailable in /proc/meminfo); lower "
+        "'Mesh refinement/Maximum level' or 'Mesh refinement/Bulk level'");
+  }
+} // namespace vefs
