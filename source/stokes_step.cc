@@ -161,12 +161,48 @@ namespace vefs
                              owned.get_view(n_u, n_u + n_p)};
     relevant_partitioning = {relevant.get_view(0, n_u),
                              relevant.get_view(n_u, n_u + n_p)};
+    check_periodic_liquid();
     // The velocity block comes first: its indices are the global ones.
     contact.reset(dof_handler,
                   owned_partitioning[0],
                   relevant_partitioning[0],
                   liquid_index);
     make_constraints_and_matrices();
+  }
+
+  template <int dim>
+  void
+  StokesStep<dim>::check_periodic_liquid() const
+  {
+    const auto directions = parameters.periodic_directions();
+    if (directions.empty())
+      return;
+    bool mismatch = false;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->has_periodic_neighbor(f))
+            {
+              const auto neighbor = cell->periodic_neighbor(f);
+              if (neighbor->has_children())
+                {
+                  for (unsigned int c = 0;
+                       c < GeometryInfo<dim>::max_children_per_face;
+                       ++c)
+                    if (cell->periodic_neighbor_child_on_subface(f, c)
+                          ->active_fe_index() != cell->active_fe_index())
+                      mismatch = true;
+                }
+              else if (neighbor->active_fe_index() != cell->active_fe_index())
+                mismatch = true;
+            }
+    if (Utilities::MPI::logical_or(mismatch, comm))
+      throw InputError(
+        "entry 'Walls/" + wall_names[2 * directions[0]] +
+        "': the liquid meets empty space across the periodic walls; a free "
+        "surface that crosses a periodic wall is not supported in this "
+        "version: the liquid must meet liquid there (at t = " +
+        Utilities::to_string(time) + " s)");
   }
 
   template <int dim>

@@ -124,6 +124,14 @@ namespace vefs
     void
     make_wall_constraints(const double time);
 
+    /**
+     * The periodicity constraints of deal.II 9.4 need the same element on
+     * both sides of a periodic face: stop with a message where the liquid
+     * meets empty space across periodic walls.
+     */
+    void
+    check_periodic_liquid() const;
+
     /** Constraints, sparsity patterns and matrices for the current dofs. */
     void
     make_constraints_and_matrices();
