@@ -222,6 +222,14 @@ namespace vefs
                                              constraints);
     make_wall_constraints(time);
     contact.add_constraints(constraints);
+    // A periodic pair may be split between ranks, and the walls it meets
+    // constrain the same nodes: each rank must know the constraints of the
+    // other side. (Several ranks allow one periodic pair only.)
+    if (!parameters.periodic_directions().empty() &&
+        Utilities::MPI::n_mpi_processes(comm) > 1)
+      constraints.make_consistent_in_parallel(dof_handler.locally_owned_dofs(),
+                                              relevant,
+                                              comm);
     constraints.close();
 
     Table<2, DoFTools::Coupling> coupling(dim + 1, dim + 1);
