@@ -44,8 +44,21 @@ namespace vefs
     if (parameters.velocity_is_prescribed())
       prescribed_velocity = make_prescribed_velocity<dim>(parameters);
     if (!parameters.exact_final_level_set.empty())
+      exact_final_level_set = make_exact_final_level_set<dim>(parameters);
+    add_scene_columns();
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
-        exact_final_level_set = make_exact_final_level_set<dim>(parameters);
+        std::ofstream file(parameters.output_directory + "/parameters.prm");
+        prm.print_parameters(file, ParameterHandler::PRM);
+      }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::add_scene_columns()
+  {
+    if (exact_final_level_set)
+      {
         statistics_file.add_column("shape_error",
                                    [](const auto &s) { return s.shape_error; });
         statistics_file.add_column("interface_thickness", [](const auto &s) {
@@ -79,11 +92,6 @@ namespace vefs
                                    [d](const auto &s) {
                                      return s.probe_velocity[d];
                                    });
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        std::ofstream file(parameters.output_directory + "/parameters.prm");
-        prm.print_parameters(file, ParameterHandler::PRM);
-      }
   }
 
   template <int dim>
@@ -291,7 +299,8 @@ namespace vefs
           liquid_fraction = liquid_fractions(fields);
         }
 
-        // 3. Diffusion: the Stokes-like step on the liquid cells.
+        // 3. Diffusion: the Stokes-like step on the liquid cells, then
+        // (with a stress) 4. the stress update.
         if (prescribed_velocity)
           {
             prescribed_velocity->set_time(statistics.time + tau);

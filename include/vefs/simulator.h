@@ -34,6 +34,13 @@ namespace vefs
     run();
 
   private:
+    /**
+     * The statistics columns of what this scene has: the shape error, the
+     * stress, the contact walls, the probe.
+     */
+    void
+    add_scene_columns();
+
     void
     make_cavity();
 
