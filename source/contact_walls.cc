@@ -15,6 +15,18 @@ namespace vefs
   }
 
   template <int dim>
+  bool
+  ContactWalls<dim>::is_on_contact_wall(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const unsigned int                                    face) const
+  {
+    return cell->at_boundary(face) &&
+           std::find(walls.begin(),
+                     walls.end(),
+                     cell->face(face)->boundary_id()) != walls.end();
+  }
+
+  template <int dim>
   void
   ContactWalls<dim>::reset(const DoFHandler<dim> &dof_handler,
                            const IndexSet        &owned,
@@ -32,10 +44,7 @@ namespace vefs
       if (!cell->is_artificial() && cell->active_fe_index() == liquid_index &&
           cell->at_boundary())
         for (const unsigned int f : cell->face_indices())
-          if (cell->at_boundary(f) &&
-              std::count(walls.begin(),
-                         walls.end(),
-                         cell->face(f)->boundary_id()) > 0)
+          if (is_on_contact_wall(cell, f))
             {
               const types::boundary_id wall = cell->face(f)->boundary_id();
               const auto              &fe   = cell->get_fe();
@@ -84,10 +93,7 @@ namespace vefs
         {
           bool on_contact_wall = false;
           for (const unsigned int f : cell->face_indices())
-            if (cell->at_boundary(f) &&
-                std::count(walls.begin(),
-                           walls.end(),
-                           cell->face(f)->boundary_id()) > 0)
+            if (is_on_contact_wall(cell, f))
               on_contact_wall = true;
           if (!on_contact_wall)
             continue;
@@ -140,10 +146,7 @@ namespace vefs
       if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index &&
           cell->at_boundary())
         for (const unsigned int f : cell->face_indices())
-          if (cell->at_boundary(f) &&
-              std::count(walls.begin(),
-                         walls.end(),
-                         cell->face(f)->boundary_id()) > 0)
+          if (is_on_contact_wall(cell, f))
             {
               face_dofs.resize(cell->get_fe().n_dofs_per_face());
               cell->face(f)->get_dof_indices(face_dofs, liquid_index);

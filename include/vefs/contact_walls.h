@@ -70,6 +70,11 @@ namespace vefs
   private:
     using Vector = LinearAlgebra::distributed::Vector<double>;
 
+    bool
+    is_on_contact_wall(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const unsigned int                                    face) const;
+
     /** Boundary ids of the contact walls. */
     std::vector<types::boundary_id> walls;
     /**
