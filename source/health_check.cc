@@ -68,27 +68,16 @@ namespace vefs
   std::string
   state_problem(const Parameters             &p,
                 const TransportedFields<dim> &fields,
-                const StepStatistics<dim>    &s)
+                const StepStatistics<dim>    &s,
+                const std::string            &non_finite_statistic)
   {
     if (!fields_are_finite(fields))
       return "the fields (level set, velocity or stress) are not finite: the "
              "flow has blown up; " +
              smaller_steps;
-    const std::vector<std::pair<std::string, double>> measured = {
-      {"volume", s.volume},
-      {"volume_change", s.volume_change},
-      {"kinetic_energy", s.kinetic_energy},
-      {"potential_energy", s.potential_energy},
-      {"elastic_energy", s.elastic_energy},
-      {"max_velocity", s.max_velocity},
-      {"surface_area", s.surface_area},
-      {"centroid", s.centroid.norm()},
-      {"probe_velocity", s.probe_velocity.norm()},
-      {"min_conformation_eigenvalue", s.min_conformation_eigenvalue}};
-    for (const auto &[name, value] : measured)
-      if (!std::isfinite(value))
-        return "the statistic " + name + " is " + number(value) +
-               ": the flow has blown up; " + smaller_steps;
+    if (!non_finite_statistic.empty())
+      return "the statistic " + non_finite_statistic +
+             " is not finite: the flow has blown up; " + smaller_steps;
     if (!(s.volume > 0) || s.liquid_cells == 0)
       return "the liquid has vanished (volume " + number(s.volume) +
              "): it left through open walls ('Walls/...') or was lost; "
@@ -109,9 +98,11 @@ namespace vefs
   template std::string
   state_problem<2>(const Parameters &,
                    const TransportedFields<2> &,
-                   const StepStatistics<2> &);
+                   const StepStatistics<2> &,
+                   const std::string &);
   template std::string
   state_problem<3>(const Parameters &,
                    const TransportedFields<3> &,
-                   const StepStatistics<3> &);
+                   const StepStatistics<3> &,
+                   const std::string &);
 } // namespace vefs

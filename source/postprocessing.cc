@@ -4,6 +4,7 @@
 #include <vefs/free_surface.h>
 #include <vefs/postprocessing.h>
 
+#include <cmath>
 #include <iomanip>
 
 namespace vefs
@@ -152,10 +153,21 @@ namespace vefs
   void
   StatisticsFile<dim>::add_column(const std::string &name,
                                   const Reader      &reader,
-                                  const unsigned int precision)
+                                  const unsigned int precision,
+                                  const bool         finite_every_step)
   {
     Assert(!header_written, ExcMessage("Columns come before the first row."));
-    columns.push_back({name, reader, precision});
+    columns.push_back({name, reader, precision, finite_every_step});
+  }
+
+  template <int dim>
+  std::string
+  StatisticsFile<dim>::non_finite_column(const StepStatistics<dim> &row) const
+  {
+    for (const auto &column : columns)
+      if (column.finite_every_step && !std::isfinite(column.reader(row)))
+        return column.name;
+    return "";
   }
 
   template <int dim>

@@ -59,8 +59,12 @@ namespace vefs
   {
     if (exact_final_level_set)
       {
-        statistics_file.add_column("shape_error",
-                                   [](const auto &s) { return s.shape_error; });
+        // Measured at the end time only: NaN before.
+        statistics_file.add_column(
+          "shape_error",
+          [](const auto &s) { return s.shape_error; },
+          10,
+          false);
         statistics_file.add_column("interface_thickness", [](const auto &s) {
           return s.interface_thickness;
         });
@@ -433,7 +437,11 @@ namespace vefs
     }
     {
       TimerOutput::Scope scope(timer, "health check");
-      const std::string problem = state_problem(parameters, fields, statistics);
+      const std::string  problem =
+        state_problem(parameters,
+                      fields,
+                      statistics,
+                      statistics_file.non_finite_column(statistics));
       if (!problem.empty())
         stop(statistics.step, statistics, problem, liquid_fraction, false);
     }

@@ -155,19 +155,19 @@ namespace vefs
     const types::global_dof_index n_p = dofs_per_block[1];
 
     const IndexSet owned = dof_handler.locally_owned_dofs();
-    IndexSet       relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
     owned_partitioning    = {owned.get_view(0, n_u),
                              owned.get_view(n_u, n_u + n_p)};
-    relevant_partitioning = {relevant.get_view(0, n_u),
-                             relevant.get_view(n_u, n_u + n_p)};
+    relevant_partitioning = {relevant_dofs.get_view(0, n_u),
+                             relevant_dofs.get_view(n_u, n_u + n_p)};
     check_periodic_liquid();
     // The velocity block comes first: its indices are the global ones.
     contact.reset(dof_handler,
                   owned_partitioning[0],
                   relevant_partitioning[0],
                   liquid_index);
-    make_constraints_and_matrices();
+    make_constraints();
+    make_matrices();
   }
 
   template <int dim>
@@ -207,12 +207,10 @@ namespace vefs
 
   template <int dim>
   void
-  StokesStep<dim>::make_constraints_and_matrices()
+  StokesStep<dim>::make_constraints()
   {
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     constraints.clear();
-    constraints.reinit(relevant);
+    constraints.reinit(relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     for (const unsigned int d : parameters.periodic_directions())
       DoFTools::make_periodicity_constraints(dof_handler,
@@ -228,10 +226,19 @@ namespace vefs
     if (!parameters.periodic_directions().empty() &&
         Utilities::MPI::n_mpi_processes(comm) > 1)
       constraints.make_consistent_in_parallel(dof_handler.locally_owned_dofs(),
-                                              relevant,
+                                              relevant_dofs,
                                               comm);
     constraints.close();
+  }
 
+  template <int dim>
+  void
+  StokesStep<dim>::make_matrices()
+  {
+    // With contact walls the constrained unknowns change between the solves
+    // of a step: their rows stay in the pattern, so that only the
+    // constraints are remade.
+    const bool                   keep_constrained_rows = !contact.empty();
     Table<2, DoFTools::Coupling> coupling(dim + 1, dim + 1);
     for (unsigned int i = 0; i < dim + 1; ++i)
       for (unsigned int j = 0; j < dim + 1; ++j)
@@ -244,7 +251,7 @@ namespace vefs
                                     coupling,
                                     pattern,
                                     constraints,
-                                    false,
+                                    keep_constrained_rows,
                                     Utilities::MPI::this_mpi_process(comm));
     pattern.compress();
     system_matrix.clear();
@@ -499,7 +506,7 @@ namespace vefs
                                 tau);
     if (!contact.update(dof_handler, solution, local, liquid_index))
       return false;
-    make_constraints_and_matrices();
+    make_constraints();
     return true;
   }
 

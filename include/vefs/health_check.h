@@ -29,12 +29,17 @@ namespace vefs
                const double       cfl,
                const double       max_velocity);
 
-  /** After a step: the fields and the statistics of @p statistics. */
+  /**
+   * After a step: the fields, the volume, and @p non_finite_statistic, the
+   * statistics column found not finite (StatisticsFile::non_finite_column()),
+   * empty if none.
+   */
   template <int dim>
   std::string
   state_problem(const Parameters             &parameters,
                 const TransportedFields<dim> &fields,
-                const StepStatistics<dim>    &statistics);
+                const StepStatistics<dim>    &statistics,
+                const std::string            &non_finite_statistic);
 } // namespace vefs
 
 #endif

@@ -91,11 +91,23 @@ namespace vefs
     /** The file, with the columns every scene has. */
     StatisticsFile(const std::string &directory, const MPI_Comm comm);
 
-    /** Add a column; before the first row only. */
+    /**
+     * Add a column; before the first row only. A column that is not
+     * @p finite_every_step may hold NaN where it is not measured (the
+     * shape error before the last step).
+     */
     void
     add_column(const std::string &name,
                const Reader      &reader,
-               const unsigned int precision = 10);
+               const unsigned int precision         = 10,
+               const bool         finite_every_step = true);
+
+    /**
+     * The first column that must be finite every step and is not in
+     * @p row; empty if there is none.
+     */
+    std::string
+    non_finite_column(const StepStatistics<dim> &row) const;
 
     void
     write(const StepStatistics<dim> &row);
@@ -106,6 +118,7 @@ namespace vefs
       std::string  name;
       Reader       reader;
       unsigned int precision;
+      bool         finite_every_step;
     };
 
     std::vector<Column> columns;

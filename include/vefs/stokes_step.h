@@ -57,8 +57,7 @@ namespace vefs
     /**
      * With contact walls: update the contact set from the last solution
      * (design section 4). Returns true if it changed; then the constraints
-     * and matrices are remade and the step must be assembled and solved
-     * again.
+     * are remade and the step must be assembled and solved again.
      */
     bool
     update_contact(const TransportedFields<dim> &fields, const double tau);
@@ -132,9 +131,13 @@ namespace vefs
     void
     check_periodic_liquid() const;
 
-    /** Constraints, sparsity patterns and matrices for the current dofs. */
+    /** Hanging-node, periodic, wall and contact constraints. */
     void
-    make_constraints_and_matrices();
+    make_constraints();
+
+    /** Sparsity patterns, matrices and vectors for the current dofs. */
+    void
+    make_matrices();
 
     /** A liquid cell's face on the free surface or on an open wall. */
     bool
@@ -147,6 +150,7 @@ namespace vefs
     DoFHandler<dim>                               dof_handler;
     std::vector<IndexSet>                         owned_partitioning;
     std::vector<IndexSet>                         relevant_partitioning;
+    IndexSet                                      relevant_dofs;
     AffineConstraints<double>                     constraints;
     std::array<std::unique_ptr<Function<dim>>, 6> wall_velocity;
 

@@ -3,7 +3,6 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/index_set.h>
-#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -68,25 +67,6 @@ namespace vefs
       for (unsigned int d = 0; d < dim; ++d)
         u[d] = fields(node.dofs[d]);
       return u;
-    }
-
-    /** The stress stored at @p node (only if has_stress()). */
-    SymmetricTensor<2, dim>
-    stress(const Node &node) const
-    {
-      SymmetricTensor<2, dim> sigma;
-      for (unsigned int i = 0; i < n_stress_components; ++i)
-        sigma.access_raw_entry(i) =
-          fields(node.dofs[first_stress_component + i]);
-      return sigma;
-    }
-
-    void
-    set_stress(const Node &node, const SymmetricTensor<2, dim> &sigma)
-    {
-      for (unsigned int i = 0; i < n_stress_components; ++i)
-        fields(node.dofs[first_stress_component + i]) =
-          sigma.access_raw_entry(i);
     }
 
     /** Distribute degrees of freedom after a mesh change; fields are zero. */
