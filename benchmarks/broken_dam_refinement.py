@@ -43,6 +43,7 @@ import time
 REPO_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(REPO_ROOT, "scripts"))
 import compare_martin_moyce as cmm  # noqa: E402
+from vefs_stats import prm_logical_lines  # noqa: E402
 
 RUN_PREFIX = "broken_dam_2d"
 
@@ -61,40 +62,6 @@ def _norm(name):
     return " ".join(name.split())
 
 
-def _strip_comment(line):
-    """Line without its '#' comment (a backslash-escaped '\\#' is kept)."""
-    out = []
-    i = 0
-    while i < len(line):
-        c = line[i]
-        if c == "\\" and i + 1 < len(line) and line[i + 1] == "#":
-            out.append("\\#")
-            i += 2
-            continue
-        if c == "#":
-            return "".join(out), line[i:]
-        out.append(c)
-        i += 1
-    return "".join(out), ""
-
-
-def _logical_lines(lines):
-    """Group physical lines (without line ends) into logical lines joined by a
-    trailing backslash.  Yields (first index, last index, code, comment)."""
-    i = 0
-    n = len(lines)
-    while i < n:
-        first = i
-        code, comment = _strip_comment(lines[i])
-        while code.rstrip().endswith("\\") and i + 1 < n:
-            i += 1
-            c2, comment2 = _strip_comment(lines[i])
-            code = code.rstrip()[:-1] + " " + c2.strip()
-            comment = comment2 or comment
-        yield first, i, code, comment
-        i += 1
-
-
 def set_entry(text, path, name, value):
     """Return the prm text with entry `name` in subsection `path` (a list of
     subsection names, [] for the top level) set to `value`.
@@ -111,7 +78,7 @@ def set_entry(text, path, name, value):
     blocks = {(): (0, len(lines))}  # path -> (start, index of 'end' line)
     open_starts = []
     replacements = []  # (first, last, new line)
-    for first, last, code, comment in _logical_lines(lines):
+    for first, last, code, comment in prm_logical_lines(lines):
         m = _SUBSECTION.match(code)
         if m and code.strip():
             stack.append(_norm(m.group(1)))

@@ -34,6 +34,7 @@ import os
 __all__ = ["read_statistics", "read_csv_reference", "interpolate",
            "column", "statistics_path", "parameters_path", "read_parameters",
            "parameter", "parameter_float", "parameter_floats",
+           "prm_split_comment", "prm_logical_lines",
            "parabolic_vertex", "zero_crossings"]
 
 
@@ -222,21 +223,39 @@ def parameters_path(path_or_dir):
     return path_or_dir
 
 
-def _prm_strip_comment(line):
-    """Line without its '#' comment; '\\#' stands for a literal '#'."""
+def prm_split_comment(line):
+    """(code, comment) of a PRM line: the code before its '#' comment (a
+    backslash-escaped '\\#' is kept as written) and the comment."""
     out = []
     i = 0
     while i < len(line):
         c = line[i]
         if c == "\\" and i + 1 < len(line) and line[i + 1] == "#":
-            out.append("#")
+            out.append("\\#")
             i += 2
             continue
         if c == "#":
-            break
+            return "".join(out), line[i:]
         out.append(c)
         i += 1
-    return "".join(out)
+    return "".join(out), ""
+
+
+def prm_logical_lines(lines):
+    """Group physical lines (without line ends) into logical lines joined by a
+    trailing backslash.  Yields (first index, last index, code, comment)."""
+    i = 0
+    n = len(lines)
+    while i < n:
+        first = i
+        code, comment = prm_split_comment(lines[i])
+        while code.rstrip().endswith("\\") and i + 1 < n:
+            i += 1
+            c2, comment2 = prm_split_comment(lines[i])
+            code = code.rstrip()[:-1] + " " + c2.strip()
+            comment = comment2 or comment
+        yield first, i, code, comment
+        i += 1
 
 
 def read_parameters(path_or_dir):
@@ -258,15 +277,9 @@ def read_parameters(path_or_dir):
 
     result = {}
     stack = []
-    i = 0
-    while i < len(physical):
-        number = i + 1
-        line = _prm_strip_comment(physical[i])
-        while line.rstrip().endswith("\\") and i + 1 < len(physical):
-            i += 1
-            line = line.rstrip()[:-1] + " " + \
-                _prm_strip_comment(physical[i]).strip()
-        i += 1
+    for first, _, code, _ in prm_logical_lines(physical):
+        number = first + 1
+        line = code.replace("\\#", "#")
         text = line.strip()
         if not text:
             continue
