@@ -13,7 +13,7 @@ namespace vefs
   void
   measure_step(const Parameters             &parameters,
                const TransportedFields<dim> &fields,
-               const Vector<float>          &liquid_fraction,
+               const LiquidDomain<dim>      &domain,
                const double                  initial_volume,
                const double                  expected_volume,
                StepStatistics<dim>          &s)
@@ -42,8 +42,7 @@ namespace vefs
     double       kinetic = 0, potential = 0, liquid_volume = 0, max_speed = 0;
     unsigned int liquid_cells = 0;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          is_liquid(liquid_fraction[cell->active_cell_index()]))
+      if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
           ++liquid_cells;
           liquid_volume += cell->measure();
@@ -198,14 +197,14 @@ namespace vefs
   template void
   measure_step<2>(const Parameters &,
                   const TransportedFields<2> &,
-                  const Vector<float> &,
+                  const LiquidDomain<2> &,
                   const double,
                   const double,
                   StepStatistics<2> &);
   template void
   measure_step<3>(const Parameters &,
                   const TransportedFields<3> &,
-                  const Vector<float> &,
+                  const LiquidDomain<3> &,
                   const double,
                   const double,
                   StepStatistics<3> &);

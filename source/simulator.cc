@@ -248,11 +248,11 @@ namespace vefs
       set_initial_state();
     }
 
-    Vector<float>       liquid_fraction = liquid_fractions(fields);
+    LiquidDomain<dim>   domain(fields);
     StepStatistics<dim> statistics;
     if (!prescribed_velocity)
-      flow.setup(liquid_fraction, 0);
-    report(statistics, liquid_fraction);
+      flow.setup(domain, 0);
+    report(statistics, domain);
 
     while (!is_last_step(statistics))
       {
@@ -270,7 +270,7 @@ namespace vefs
                                                  cfl,
                                                  statistics.max_velocity);
         if (!problem.empty())
-          stop(statistics.step + 1, statistics, problem, liquid_fraction, true);
+          stop(statistics.step + 1, statistics, problem, domain, true);
         ++statistics.step;
         statistics.tau = tau;
         statistics.cfl = cfl;
@@ -300,7 +300,7 @@ namespace vefs
           TimerOutput::Scope scope(timer, "2 mesh adaptation");
           levels.expect_cfl(expected_cfl);
           adapt_mesh(triangulation, fields, levels, 1);
-          liquid_fraction = liquid_fractions(fields);
+          domain = LiquidDomain<dim>(fields);
         }
 
         // 3. Diffusion: the Stokes-like step on the liquid cells, then
@@ -316,7 +316,7 @@ namespace vefs
             try
               {
                 statistics.linear_iterations =
-                  diffusion_step(liquid_fraction,
+                  diffusion_step(domain,
                                  statistics.time + tau,
                                  tau,
                                  expected_cfl);
@@ -326,30 +326,26 @@ namespace vefs
                 failure = error.what();
               }
             if (!failure.empty())
-              stop(statistics.step,
-                   statistics,
-                   failure,
-                   liquid_fraction,
-                   false);
+              stop(statistics.step, statistics, failure, domain, false);
             expected_volume -= tau * flow.outflow_rate();
           }
 
         statistics.time += tau;
-        report(statistics, liquid_fraction);
+        report(statistics, domain);
       }
   }
 
   template <int dim>
   unsigned int
-  Simulator<dim>::diffusion_step(const Vector<float> &liquid_fraction,
-                                 const double         new_time,
-                                 const double         tau,
-                                 const double         expected_cfl)
+  Simulator<dim>::diffusion_step(const LiquidDomain<dim> &domain,
+                                 const double             new_time,
+                                 const double             tau,
+                                 const double             expected_cfl)
   {
     unsigned int iterations = 0;
     {
       TimerOutput::Scope scope(timer, "3 diffusion: setup");
-      flow.setup(liquid_fraction, new_time);
+      flow.setup(domain, new_time);
     }
     // Contact walls: solve again while the contact set changes (design
     // section 4); a few times at the most.
@@ -379,7 +375,7 @@ namespace vefs
       if (rheology.has_stress())
         {
           TimerOutput::Scope scope(timer, "4 stress update");
-          update_stress(fields, liquid_fraction, rheology, tau);
+          update_stress(fields, domain, rheology, tau);
         }
       const unsigned int layers =
         std::max<unsigned int>(parameters.extension_layers,
@@ -391,14 +387,14 @@ namespace vefs
 
   template <int dim>
   void
-  Simulator<dim>::report(StepStatistics<dim> &statistics,
-                         const Vector<float> &liquid_fraction)
+  Simulator<dim>::report(StepStatistics<dim>     &statistics,
+                         const LiquidDomain<dim> &domain)
   {
     {
       TimerOutput::Scope scope(timer, "postprocessing");
       measure_step(parameters,
                    fields,
-                   liquid_fraction,
+                   domain,
                    initial_volume,
                    expected_volume,
                    statistics);
@@ -407,9 +403,8 @@ namespace vefs
       statistics.contact_measure = flow.contact_measure();
       if (rheology.has_stress())
         {
-          const StressMeasure stress =
-            measure_stress(fields, liquid_fraction, rheology);
-          statistics.elastic_energy = stress.elastic_energy;
+          const StressMeasure stress = measure_stress(fields, domain, rheology);
+          statistics.elastic_energy  = stress.elastic_energy;
           statistics.min_conformation_eigenvalue =
             stress.min_conformation_eigenvalue;
           statistics.non_positive_conformation_points =
@@ -429,7 +424,7 @@ namespace vefs
               : std::numeric_limits<double>::quiet_NaN();
           statistics.interface_thickness =
             interface_thickness(fields,
-                                liquid_fraction,
+                                domain.fractions(),
                                 statistics.surface_area,
                                 levels.finest_cell_size);
         }
@@ -443,7 +438,7 @@ namespace vefs
                       statistics,
                       statistics_file.non_finite_column(statistics));
       if (!problem.empty())
-        stop(statistics.step, statistics, problem, liquid_fraction, false);
+        stop(statistics.step, statistics, problem, domain, false);
     }
     statistics_file.write(statistics);
 
@@ -452,7 +447,7 @@ namespace vefs
          is_last_step(statistics)))
       {
         TimerOutput::Scope scope(timer, "output");
-        visualization.write(fields, flow, liquid_fraction, statistics.time);
+        visualization.write(fields, flow, domain.fractions(), statistics.time);
         last_output_step = statistics.step;
       }
 
@@ -476,13 +471,13 @@ namespace vefs
   Simulator<dim>::stop(const unsigned int         step,
                        const StepStatistics<dim> &statistics,
                        const std::string         &problem,
-                       const Vector<float>       &liquid_fraction,
+                       const LiquidDomain<dim>   &domain,
                        const bool                 state_is_good)
   {
     // Keep the state the run ended with for a look, if it can be shown.
     const bool written = state_is_good && last_output_step == statistics.step;
     if (!written && fields_are_finite(fields))
-      visualization.write(fields, flow, liquid_fraction, statistics.time);
+      visualization.write(fields, flow, domain.fractions(), statistics.time);
     std::string what = problem;
     while (!what.empty() && what.back() == '.')
       what.pop_back();

@@ -135,15 +135,13 @@ namespace vefs
 
   template <int dim>
   void
-  StokesStep<dim>::setup(const Vector<float> &liquid_fraction,
-                         const double         new_time)
+  StokesStep<dim>::setup(const LiquidDomain<dim> &domain, const double new_time)
   {
     time = new_time;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        cell->set_active_fe_index(
-          is_liquid(liquid_fraction[cell->active_cell_index()]) ? liquid_index
-                                                                : empty_index);
+        cell->set_active_fe_index(domain.has_liquid(cell) ? liquid_index
+                                                          : empty_index);
     dof_handler.distribute_dofs(fe_collection);
 
     std::vector<unsigned int> block_component(dim + 1, 0);

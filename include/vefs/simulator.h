@@ -7,6 +7,7 @@
 #include <deal.II/distributed/tria.h>
 
 #include <vefs/box_mesh_locator.h>
+#include <vefs/liquid_domain.h>
 #include <vefs/mesh_adaptation.h>
 #include <vefs/output_directory.h>
 #include <vefs/parameters.h>
@@ -67,10 +68,10 @@ namespace vefs
      * cells wide: returns the Krylov iterations.
      */
     unsigned int
-    diffusion_step(const Vector<float> &liquid_fraction,
-                   const double         new_time,
-                   const double         tau,
-                   const double         expected_cfl);
+    diffusion_step(const LiquidDomain<dim> &domain,
+                   const double             new_time,
+                   const double             tau,
+                   const double             expected_cfl);
 
     /** The regime and the mode, for the banner. */
     std::string
@@ -84,8 +85,7 @@ namespace vefs
 
     /** Measure, check the health of and write the state of a step. */
     void
-    report(StepStatistics<dim> &statistics,
-           const Vector<float> &liquid_fraction);
+    report(StepStatistics<dim> &statistics, const LiquidDomain<dim> &domain);
 
     /**
      * Stop the run at @p step with @p problem: write the current state if
@@ -96,7 +96,7 @@ namespace vefs
     stop(const unsigned int         step,
          const StepStatistics<dim> &statistics,
          const std::string         &problem,
-         const Vector<float>       &liquid_fraction,
+         const LiquidDomain<dim>   &domain,
          const bool                 state_is_good);
 
     const Parameters   &parameters;

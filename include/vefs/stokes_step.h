@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <vefs/contact_walls.h>
+#include <vefs/liquid_domain.h>
 #include <vefs/parameters.h>
 #include <vefs/rheology.h>
 #include <vefs/transported_fields.h>
@@ -42,9 +43,9 @@ namespace vefs
     StokesStep(const Parameters                                &parameters,
                const parallel::distributed::Triangulation<dim> &triangulation);
 
-    /** Flow unknowns on the cells whose liquid fraction is >= 1/2. */
+    /** Flow unknowns on the cells of @p domain that hold liquid. */
     void
-    setup(const Vector<float> &liquid_fraction, const double time);
+    setup(const LiquidDomain<dim> &domain, const double time);
 
     /** Assemble with u* = the advected velocity of @p fields. */
     void
