@@ -424,7 +424,7 @@ namespace vefs
               : std::numeric_limits<double>::quiet_NaN();
           statistics.interface_thickness =
             interface_thickness(fields,
-                                domain.fractions(),
+                                liquid_fractions(fields),
                                 statistics.surface_area,
                                 levels.finest_cell_size);
         }

@@ -93,20 +93,20 @@ namespace vefs
                  const LiquidDomain<dim>      &domain,
                  const Rheology<dim>          &rheology)
   {
-    const QGauss<dim>                            quadrature(2);
-    FEValues<dim>                                fe_values(fields.mapping,
-                            fields.fe,
-                            quadrature,
-                            update_values | update_JxW_values);
+    LiquidValues<dim>                            liquid_values(domain,
+                                    fields.mapping,
+                                    fields.fe,
+                                    update_values | update_JxW_values);
     const FEValuesExtractors::SymmetricTensor<2> stress(
       TransportedFields<dim>::first_stress_component);
-    std::vector<SymmetricTensor<2, dim>> sigma(quadrature.size());
+    std::vector<SymmetricTensor<2, dim>> sigma;
 
     StressMeasure measure;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
-          fe_values.reinit(cell);
+          const FEValues<dim> &fe_values = liquid_values.reinit(cell);
+          sigma.resize(fe_values.n_quadrature_points);
           fe_values[stress].get_function_values(fields.fields, sigma);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
