@@ -26,8 +26,9 @@ namespace vefs
                                    const bool               matrices_wanted,
                                    const FaceAction        &action)
   {
-    using Location   = typename LiquidDomain<dim>::Location;
-    const auto visit = [&](const auto        &cell,
+    using Location = typename LiquidDomain<dim>::Location;
+    std::vector<types::global_dof_index> dofs, neighbor_dofs;
+    const auto                           visit = [&](const auto        &cell,
                            const unsigned int face,
                            const unsigned int subface,
                            const auto        &neighbor,
@@ -35,13 +36,23 @@ namespace vefs
                            const unsigned int neighbor_subface) {
       if (!domain.has_liquid(neighbor))
         return;
+      if (!matrices_wanted)
+        {
+          // The sparsity pattern needs only the dofs of both cells.
+          dofs.resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          neighbor_dofs.resize(neighbor->get_fe().n_dofs_per_cell());
+          neighbor->get_dof_indices(neighbor_dofs);
+          dofs.insert(dofs.end(), neighbor_dofs.begin(), neighbor_dofs.end());
+          action(matrix, schur, dofs);
+          return;
+        }
       interface_values
         .reinit(cell, face, subface, neighbor, neighbor_face, neighbor_subface);
       const unsigned int n = interface_values.n_current_interface_dofs();
       matrix.reinit(n, n);
       schur.reinit(n, n);
-      if (matrices_wanted)
-        compute(cell, domain.location(neighbor) == Location::cut ? 0.5 : 1.);
+      compute(cell, domain.location(neighbor) == Location::cut ? 0.5 : 1.);
       action(matrix, schur, interface_values.get_interface_dof_indices());
     };
 

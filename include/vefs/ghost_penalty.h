@@ -46,8 +46,9 @@ namespace vefs
      * Call @p action for every face of a locally owned cut cell with liquid
      * on the other side. A face between two cut cells is seen from both,
      * with half the weight each time (the other side may be on another
-     * rank). With @p matrices_wanted false the matrices are left zero: for
-     * the sparsity pattern.
+     * rank). With @p matrices_wanted false the matrices are empty and the
+     * dofs are those of both cells (shared ones twice): for the sparsity
+     * pattern.
      */
     void
     for_each_face(const DoFHandler<dim>   &dof_handler,

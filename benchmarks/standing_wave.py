@@ -1,0 +1,151 @@
+#!/usr/bin/env python3
+"""Standing gravity wave (prm/standing_wave_2d.prm) at three resolutions and
+two time steps against linear theory (scripts/standing_wave.py): frequency
+error, numerical amplitude loss per period, wall time; a plot of the
+surface height at the wall x = 0 against the exact curve.
+
+Usage (from anywhere; the plot needs Debian's /usr/bin/python3 with
+matplotlib):
+  /usr/bin/python3 benchmarks/standing_wave.py [--vefs build/vefs]
+      [--levels 5 6 7] [--steps-per-period 20 40] [--periods 3]
+      [--results-dir benchmarks/results/standing_wave]
+      [--output doc/standing_wave.md] [--plot doc/standing_wave.png]
+      [--no-run]
+
+Each run is the scene with Maximum level = L (Bulk level = L - 2), the time
+step T/n (T the exact linear period) and the end time --periods T, on one
+rank; its output goes to <results-dir>/L<L>_n<n>/. --no-run only analyses
+the runs already there.
+"""
+import argparse
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+sys.path.insert(0, HERE)
+from broken_dam_refinement import set_entry, run_serial_scene  # noqa: E402
+from standing_wave import measure, exact_wave  # noqa: E402
+from vefs_stats import read_statistics  # noqa: E402
+
+# The scene's exact period (g = 9.81, L = 0.1, d = 0.05).
+K = math.pi / 0.1
+PERIOD = 2 * math.pi / math.sqrt(9.81 * K * math.tanh(K * 0.05))
+
+
+def run_name(level, n):
+    return "L%d_n%d" % (level, n)
+
+
+def make_prm(text, level, n, periods, output_dir):
+    text = set_entry(text, ["Mesh refinement"], "Maximum level", str(level))
+    text = set_entry(text, ["Mesh refinement"], "Bulk level", str(level - 2))
+    text = set_entry(text, ["Time"], "Time step", "%.8g" % (PERIOD / n))
+    text = set_entry(text, ["Time"], "End time",
+                     "%.8g" % (periods * PERIOD * (1 + 1e-9)))
+    text = set_entry(text, ["Output"], "Interval", "0")
+    text = set_entry(text, [], "Output directory", output_dir)
+    return text
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--vefs", default=os.path.join(ROOT, "build", "vefs"))
+    parser.add_argument("--levels", type=int, nargs="+", default=[5, 6, 7])
+    parser.add_argument("--steps-per-period", type=int, nargs="+",
+                        default=[20, 40])
+    parser.add_argument("--periods", type=float, default=3)
+    parser.add_argument("--results-dir", default=os.path.join(
+        ROOT, "benchmarks", "results", "standing_wave"))
+    parser.add_argument("--output", default=os.path.join(
+        ROOT, "doc", "standing_wave.md"))
+    parser.add_argument("--plot", default=os.path.join(
+        ROOT, "doc", "standing_wave.png"))
+    parser.add_argument("--no-run", action="store_true")
+    args = parser.parse_args()
+
+    os.makedirs(args.results_dir, exist_ok=True)
+    with open(os.path.join(ROOT, "prm", "standing_wave_2d.prm")) as f:
+        base = f.read()
+    rows = []
+    for level in args.levels:
+        for n in args.steps_per_period:
+            name = run_name(level, n)
+            out = os.path.join(args.results_dir, name)
+            if not args.no_run:
+                text = make_prm(base, level, n, args.periods, out)
+                if not run_serial_scene(os.path.abspath(args.vefs),
+                                        args.results_dir, name, text):
+                    continue
+            m = measure(out)
+            s = read_statistics(out)
+            steps = len(s["step"]) - 1
+            rows.append((level, n, m, s["wall_time"][-1], steps,
+                         max(s["cells"])))
+
+    lines = [
+        "# Standing gravity wave: sharp free surface against linear theory",
+        "",
+        "Scene `prm/standing_wave_2d.prm` (tank L = 0.1 m, depth 0.05 m, "
+        "amplitude 2 mm, water, slip walls), run by "
+        "`benchmarks/standing_wave.py` on one rank; analysis "
+        "`scripts/standing_wave.py`: the period from the zero crossings of "
+        "the surface height at the wall x = 0, the amplitude loss per "
+        "period from its extrema, divided by the exact viscous decay "
+        "exp(-2 nu k^2 T) (0.07 %% per period). Exact period %.4f s." % PERIOD,
+        "",
+        "| h | tau | steps | max cells | frequency error | numerical amplitude "
+        "loss per period | wall time [s] |",
+        "|---|-----|-------|-----------|-----------------|------------------"
+        "-----------------|---------------|",
+    ]
+    for level, n, m, wall, steps, cells in rows:
+        loss = m["amplitude_loss_per_period"]
+        lines.append("| L/%d | T/%d | %d | %d | %+.3f %% | %s | %.1f |" % (
+            2 ** level, n, steps, cells, 100 * m["frequency_error"],
+            "%+.2f %%" % (100 * loss) if loss is not None else "-", wall))
+    lines.append("")
+    lines.append("A negative amplitude loss is a gain. The wall times were "
+                 "taken on the 2-core development machine, other work "
+                 "running beside.")
+    lines.append("")
+    with open(args.output, "w") as f:
+        f.write("\n".join(lines))
+    print("\n".join(lines))
+
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("no matplotlib: no plot", file=sys.stderr)
+        return
+    fig, ax = plt.subplots(figsize=(8, 4))
+    finest = None
+    for level, n, m, wall, steps, cells in rows:
+        out = os.path.join(args.results_dir, run_name(level, n))
+        s = read_statistics(out)
+        omega, decay, level_height, amplitude = exact_wave(out)
+        ax.plot(s["time"], [1000 * (h - level_height) for h in
+                            s["wall_height"]],
+                label="h = L/%d, tau = T/%d" % (2 ** level, n), lw=1)
+        finest = (omega, decay, amplitude, s["time"][-1])
+    if finest:
+        omega, decay, amplitude, t_end = finest
+        ts = [t_end * i / 600 for i in range(601)]
+        ax.plot(ts, [1000 * amplitude * math.cos(omega * t) *
+                     math.exp(-decay * t) for t in ts], "k--", lw=1.5,
+                label="linear theory")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("surface height at x = 0 minus depth [mm]")
+    ax.legend(fontsize=7, ncol=2)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(args.plot, dpi=120)
+    print("plot: %s" % args.plot)
+
+
+if __name__ == "__main__":
+    main()
