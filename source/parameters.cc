@@ -384,6 +384,19 @@ namespace vefs
                         Patterns::Double(0),
                         "Factor c of the PSPG parameter of the Q1-Q1 "
                         "element, tau_K = c / (rho/tau + 4 mu / h_K^2).");
+      prm.declare_entry(
+        "Free surface stabilization",
+        "0",
+        Patterns::Double(0, 1),
+        "Factor theta in [0, 1] of the free-surface stabilisation (Kaus et "
+        "al., PEPI 181, 2010; ASPECT's free surface stabilization theta): "
+        "the flow step sees the hydrostatic load change of the surface "
+        "moving by tau u.n within the step, theta tau rho |g.n| (u.n)(v.n) "
+        "on the free surface where gravity presses it back. 0: the surface "
+        "is explicit, stable for tau below about 2 (h / (pi |g|))^(1/2), h "
+        "the finest cell (0.010 s at h = 0.8 mm); 0.5 removes that limit "
+        "but damps surface waves of frequency omega by about "
+        "exp(-pi omega tau / 2) per period (see doc/sharp_free_surface.md).");
       prm.declare_entry("Ghost penalty",
                         "0.1",
                         Patterns::Double(0),
@@ -510,11 +523,12 @@ namespace vefs
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
-    solver_tolerance       = prm.get_double("Tolerance");
-    solver_max_iterations  = prm.get_integer("Maximum iterations");
-    pressure_stabilization = prm.get_double("Pressure stabilization");
-    ghost_penalty          = prm.get_double("Ghost penalty");
-    amg_smoother_sweeps    = prm.get_integer("AMG smoother sweeps");
+    solver_tolerance           = prm.get_double("Tolerance");
+    solver_max_iterations      = prm.get_integer("Maximum iterations");
+    pressure_stabilization     = prm.get_double("Pressure stabilization");
+    ghost_penalty              = prm.get_double("Ghost penalty");
+    free_surface_stabilization = prm.get_double("Free surface stabilization");
+    amg_smoother_sweeps        = prm.get_integer("AMG smoother sweeps");
     prm.leave_subsection();
 
     prm.enter_subsection("Transport");

@@ -96,7 +96,7 @@ namespace vefs
       if (component[i] == dim)
         pressure_mass(i) = cell->measure() / cell->n_vertices() / mu;
     if (domain.location(cell) == LiquidDomain<dim>::Location::cut)
-      add_surface_penalty(cell, h);
+      add_surface_terms(cell, h);
 
     for (const unsigned int q : values.quadrature_point_indices())
       {
@@ -167,29 +167,43 @@ namespace vefs
 
   template <int dim>
   void
-  StokesCellSystem<dim>::add_surface_penalty(
+  StokesCellSystem<dim>::add_surface_terms(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const double                                          h)
   {
-    // In the Schur preconditioner the pressure vanishes on the free
-    // surface (zero traction): a penalty there keeps L_w regular.
     NonMatching::FEImmersedSurfaceValues<dim> surface_values(
       fields.mapping,
       flow_fe,
       domain.cut_cell(cell).surface,
-      update_values | update_JxW_values);
+      update_values | update_normal_vectors | update_JxW_values);
     surface_values.reinit(cell);
+    const FEValuesExtractors::Vector velocity(0);
     const FEValuesExtractors::Scalar pressure(dim);
     const unsigned int               n_dofs = matrix.m();
+    const double theta = parameters.free_surface_stabilization;
     for (const unsigned int q : surface_values.quadrature_point_indices())
-      for (unsigned int i = 0; i < n_dofs; ++i)
-        if (component[i] == dim)
+      {
+        const double         JxW    = surface_values.JxW(q);
+        const Tensor<1, dim> normal = surface_values.normal_vector(q);
+        // The weight of the stabilisation: theta tau rho |g.n| where gravity
+        // presses the surface back (g.n < 0, n pointing out of the liquid);
+        // zero elsewhere, where the term would weaken the mass matrix.
+        const double weight =
+          theta * tau * parameters.density * std::max(-(gravity * normal), 0.);
+        for (unsigned int i = 0; i < n_dofs; ++i)
           for (unsigned int j = 0; j < n_dofs; ++j)
-            if (component[j] == dim)
+            if (component[i] == dim && component[j] == dim)
+              // In the Schur preconditioner the pressure vanishes on the
+              // free surface (zero traction): a penalty there keeps L_w
+              // regular.
               schur(i, j) += surface_penalty * schur_weight / h *
                              surface_values[pressure].value(i, q) *
-                             surface_values[pressure].value(j, q) *
-                             surface_values.JxW(q);
+                             surface_values[pressure].value(j, q) * JxW;
+            else if (weight > 0 && component[i] < dim && component[j] < dim)
+              matrix(i, j) +=
+                weight * (surface_values[velocity].value(i, q) * normal) *
+                (surface_values[velocity].value(j, q) * normal) * JxW;
+      }
   }
 
   template class StokesCellSystem<2>;

@@ -157,7 +157,7 @@ namespace vefs
                   owned_partitioning[0],
                   relevant_partitioning[0],
                   liquid_index);
-    make_constraints();
+    make_constraints(constraints, true);
     make_matrices();
   }
 
@@ -203,7 +203,8 @@ namespace vefs
 
   template <int dim>
   void
-  StokesStep<dim>::make_constraints()
+  StokesStep<dim>::make_constraints(AffineConstraints<double> &constraints,
+                                    const bool with_contact) const
   {
     constraints.clear();
     constraints.reinit(relevant_dofs);
@@ -214,8 +215,9 @@ namespace vefs
                                              2 * d + 1,
                                              d,
                                              constraints);
-    make_wall_constraints(time);
-    contact.add_constraints(constraints);
+    make_wall_constraints(constraints);
+    if (with_contact)
+      contact.add_constraints(constraints);
     // A periodic pair may be split between ranks, and the walls it meets
     // constrain the same nodes: each rank must know the constraints of the
     // other side. (Several ranks allow one periodic pair only.)
@@ -232,9 +234,16 @@ namespace vefs
   StokesStep<dim>::make_matrices()
   {
     // With contact walls the constrained unknowns change between the solves
-    // of a step: their rows stay in the pattern, so that only the
-    // constraints are remade.
-    const bool                   keep_constrained_rows = !contact.empty();
+    // of a step: the pattern is that of the constraints without contact,
+    // with the constrained rows kept, so that only the constraints are
+    // remade. (A hanging node on the wall depends on a contact unknown only
+    // while that is released.)
+    const bool                keep_constrained_rows = !contact.empty();
+    AffineConstraints<double> without_contact;
+    if (keep_constrained_rows)
+      make_constraints(without_contact, false);
+    const AffineConstraints<double> &pattern_constraints =
+      keep_constrained_rows ? without_contact : constraints;
     Table<2, DoFTools::Coupling> coupling(dim + 1, dim + 1);
     for (unsigned int i = 0; i < dim + 1; ++i)
       for (unsigned int j = 0; j < dim + 1; ++j)
@@ -246,7 +255,7 @@ namespace vefs
     DoFTools::make_sparsity_pattern(dof_handler,
                                     coupling,
                                     pattern,
-                                    constraints,
+                                    pattern_constraints,
                                     keep_constrained_rows,
                                     Utilities::MPI::this_mpi_process(comm));
     // The ghost penalty couples the two cells of a face.
@@ -259,9 +268,9 @@ namespace vefs
       *domain,
       false,
       [&](const auto &, const auto &, const auto &dofs) {
-        constraints.add_entries_local_to_global(dofs,
-                                                pattern,
-                                                keep_constrained_rows);
+        pattern_constraints.add_entries_local_to_global(dofs,
+                                                        pattern,
+                                                        keep_constrained_rows);
       });
     pattern.compress();
     system_matrix.clear();
@@ -271,6 +280,8 @@ namespace vefs
       for (unsigned int j = 0; j < dim + 1; ++j)
         coupling[i][j] =
           (i == dim && j == dim) ? DoFTools::always : DoFTools::none;
+    // Contact constraints concern velocities only, and each contact unknown
+    // starts constrained: the diagonal entries they need are all here.
     TrilinosWrappers::BlockSparsityPattern schur_pattern(owned_partitioning,
                                                          owned_partitioning,
                                                          relevant_partitioning,
@@ -299,7 +310,8 @@ namespace vefs
 
   template <int dim>
   void
-  StokesStep<dim>::make_wall_constraints(const double time)
+  StokesStep<dim>::make_wall_constraints(
+    AffineConstraints<double> &constraints) const
   {
     const FEValuesExtractors::Vector velocity(0);
     for (unsigned int w = 0; w < 2 * dim; ++w)
@@ -554,7 +566,7 @@ namespace vefs
                         ghost_penalty,
                         liquid_index))
       return false;
-    make_constraints();
+    make_constraints(constraints, true);
     return true;
   }
 

@@ -130,6 +130,7 @@ namespace vefs
     unsigned int solver_max_iterations;
     double       pressure_stabilization;
     double       ghost_penalty;
+    double       free_surface_stabilization;
     unsigned int amg_smoother_sweeps;
 
     std::string prescribed_velocity;

@@ -21,9 +21,12 @@ namespace vefs
    * a penalty for p = 0 on the free surface, and the lumped pressure mass
    * of the whole cell divided by mu). On a cut cell the integrals run over
    * the liquid part only; the free surface needs no term of its own, zero
-   * traction being the natural condition. The rheology supplies mu, k and the
-   * advected stress terms. Used by the assembly and by the reactions of contact
-   * walls.
+   * traction being the natural condition, except the optional free-surface
+   * stabilisation (Kaus et al. 2010): theta tau rho |g.n| (u.n)(v.n) where
+   * gravity presses the surface back, the change of hydrostatic load as the
+   * surface moves by tau u.n within the step. The rheology supplies mu, k and
+   * the advected stress terms. Used by the assembly and by the reactions of
+   * contact walls.
    */
   template <int dim>
   class StokesCellSystem
@@ -52,9 +55,12 @@ namespace vefs
     static constexpr double surface_penalty = 10;
 
   private:
-    /** The free-surface penalty of the Schur preconditioner on a cut cell. */
+    /**
+     * The terms on the free surface of a cut cell: the p = 0 penalty of the
+     * Schur preconditioner and the free-surface stabilisation.
+     */
     void
-    add_surface_penalty(
+    add_surface_terms(
       const typename DoFHandler<dim>::active_cell_iterator &cell,
       const double                                          h);
 

@@ -125,7 +125,7 @@ namespace vefs
     static constexpr unsigned int empty_index  = 1;
 
     void
-    make_wall_constraints(const double time);
+    make_wall_constraints(AffineConstraints<double> &constraints) const;
 
     /**
      * The periodicity constraints of deal.II 9.4 need the same element on
@@ -135,9 +135,11 @@ namespace vefs
     void
     check_periodic_liquid() const;
 
-    /** Hanging-node, periodic, wall and contact constraints. */
+    /** Hanging-node, periodic, wall and (@p with_contact) contact
+     * constraints. */
     void
-    make_constraints();
+    make_constraints(AffineConstraints<double> &constraints,
+                     const bool                 with_contact) const;
 
     /** Sparsity patterns, matrices and vectors for the current dofs. */
     void
