@@ -324,8 +324,8 @@ namespace vefs
       }
     catch (const std::exception &error)
       {
-        throw InputError("option --resume: the checkpoint '" + directory +
-                         "' is unusable: " + error.what());
+        throw CheckpointError("option --resume: the checkpoint '" + directory +
+                              "' is unusable: " + error.what());
       }
 
     // The files passed their checksums: p4est reads a sound forest.

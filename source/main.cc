@@ -69,6 +69,10 @@ namespace
       {
         return {1, error.what()};
       }
+    catch (const vefs::CheckpointError &error)
+      {
+        return {1, error.what()};
+      }
     catch (const dealii::ExceptionBase &error)
       {
         return {1, message_of(error)};

@@ -1,6 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <vefs/checkpoint.h>
 #include <vefs/free_surface.h>
 #include <vefs/postprocessing.h>
 
@@ -229,7 +230,7 @@ namespace vefs
       }
     problem = Utilities::MPI::broadcast(comm, problem, 0);
     if (!problem.empty())
-      throw InputError("option --resume: " + problem);
+      throw CheckpointError("option --resume: " + problem);
     header_written = true;
   }
 

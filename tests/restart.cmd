@@ -16,7 +16,7 @@ scene() { # output directory, steps before the stop
 }
 # "stopped ... step 12 (t = 0.012) ...": the step and the exit status.
 show() { # log, status
-  echo "  $(grep -o '^vefs: stopped[^(]*' "$1" || echo 'vefs: ran to the end')" \
+  echo "  $(grep -o '^vefs: stopped[^(]*[^( ]' "$1" || echo 'vefs: ran to the end')," \
        "exit status $2"
 }
 
@@ -44,7 +44,8 @@ ${MPIRUN:-} "$VEFS" signal.prm > signal1.log 2>&1 &
 launcher=$!
 # Once a few steps are done, signal the vefs processes (mpirun's children).
 for i in $(seq 600); do
-  [ "$(grep -vc '^#' signal/statistics 2> /dev/null)" -ge 4 ] && break
+  rows=$(grep -vc '^#' signal/statistics 2> /dev/null)
+  [ "${rows:-0}" -ge 4 ] && break
   sleep 0.1
 done
 if [ -n "${MPIRUN:-}" ]; then pkill -TERM -P $launcher; else kill -TERM $launcher; fi

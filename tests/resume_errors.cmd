@@ -1,7 +1,8 @@
 # `vefs --resume` refuses, with one message and exit status 1, a directory
 # without a checkpoint, a parameter file beside the option, a directory in
 # use (its lock file exists), a damaged checkpoint file and an incomplete
-# state file; a new run into the directory removes the old checkpoint.
+# state file; it takes over the lock of a killed run; a new run into the
+# directory removes the old checkpoint.
 set -u
 cat > scene.prm <<'PRM'
 set Output directory = output
@@ -55,7 +56,9 @@ rm -r output/checkpoint && cp -r good_checkpoint output/checkpoint
 grep -v '^end$' good_checkpoint/state > output/checkpoint/state
 attempt "incomplete state file" --resume output
 rm -r output/checkpoint && cp -r good_checkpoint output/checkpoint
-attempt "sound checkpoint" --resume output
+# The lock of a process that ended (kill -9) is taken over.
+echo "$(sh -c 'echo $$') $(hostname)" > output/vefs.lock
+attempt "lock of a killed run" --resume output
 
 sed -e 's/Interval steps   = 1/Interval steps   = 0/' \
     -e 's/Stop after steps = 2/Stop after steps = 0/' scene.prm > fresh.prm

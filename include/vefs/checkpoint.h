@@ -6,12 +6,20 @@
 #include <vefs/postprocessing.h>
 #include <vefs/transported_fields.h>
 
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace vefs
 {
+  /** A checkpoint that cannot be resumed: the run stops with this message. */
+  class CheckpointError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
   /**
    * What the time loop carries from one step to the next besides the mesh
    * and the transported fields. Of the statistics only the step, time, tau,
@@ -64,7 +72,8 @@ namespace vefs
    * Load the mesh and the fields of the checkpoint in @p directory (from
    * find_checkpoint()) into @p triangulation, which holds the coarse mesh
    * only, and @p fields; return the state. Any number of ranks. Throws
-   * InputError, on all ranks, if the checkpoint is incomplete or corrupt.
+   * CheckpointError, on all ranks, if the checkpoint is incomplete or
+   * damaged.
    */
   template <int dim>
   RunState<dim>

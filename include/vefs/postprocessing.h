@@ -99,8 +99,8 @@ namespace vefs
     /**
      * Continue the file of the run being resumed: keep its rows up to
      * @p step (those written after the checkpoint are dropped) and append.
-     * Throws InputError on all ranks if the file does not have the columns
-     * of this scene or ends before @p step.
+     * Throws CheckpointError on all ranks if the file does not have the
+     * columns of this scene or ends before @p step.
      */
     void
     resume(const unsigned int step);
