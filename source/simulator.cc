@@ -233,8 +233,10 @@ namespace vefs
                                  parameters_text,
                                  fields,
                                  state);
-      pcout << "checkpoint of step " << statistics.step << " written in "
-            << std::setprecision(3) << writing.wall_time() << " s" << std::endl;
+      if (problem.empty())
+        pcout << "checkpoint of step " << statistics.step << " written in "
+              << std::setprecision(3) << writing.wall_time() << " s"
+              << std::endl;
     }
     since_checkpoint.restart();
     const std::string directory =
