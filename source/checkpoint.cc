@@ -220,7 +220,14 @@ namespace vefs
     if (root)
       try
         {
-          std::ofstream(next + "/parameters.prm") << parameters_text;
+          {
+            std::ofstream file(next + "/parameters.prm");
+            file << parameters_text;
+            file.close();
+            if (!file)
+              throw std::runtime_error("cannot write '" + next +
+                                       "/parameters.prm'");
+          }
           const auto        &s = state.statistics;
           std::ostringstream text;
           text << magic << '\n'

@@ -74,10 +74,12 @@ namespace vefs
 
   template <int dim>
   bool
-  ContactWalls<dim>::update(const DoFHandler<dim> &dof_handler,
-                            const BlockVector     &solution,
-                            StokesCellSystem<dim> &local,
-                            const unsigned int     liquid_index)
+  ContactWalls<dim>::update(const DoFHandler<dim>   &dof_handler,
+                            const LiquidDomain<dim> &domain,
+                            const BlockVector       &solution,
+                            StokesCellSystem<dim>   &local,
+                            GhostPenalty<dim>       &ghost_penalty,
+                            const unsigned int       liquid_index)
   {
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     // The reaction of a constrained degree of freedom is its residual in
@@ -110,6 +112,18 @@ namespace vefs
             if (normal_sign.count(dofs[i]) > 0)
               reaction(dofs[i]) += residual(i);
         }
+    ghost_penalty.for_each_face(
+      dof_handler,
+      domain,
+      true,
+      [&](const FullMatrix<double> &matrix,
+          const FullMatrix<double> &,
+          const std::vector<types::global_dof_index> &face_dofs) {
+        for (unsigned int i = 0; i < face_dofs.size(); ++i)
+          if (normal_sign.count(face_dofs[i]) > 0)
+            for (unsigned int j = 0; j < face_dofs.size(); ++j)
+              reaction(face_dofs[i]) += matrix(i, j) * solution(face_dofs[j]);
+      });
     reaction.compress(VectorOperation::add);
 
     bool changed = false;

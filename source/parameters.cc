@@ -384,6 +384,13 @@ namespace vefs
                         Patterns::Double(0),
                         "Factor c of the PSPG parameter of the Q1-Q1 "
                         "element, tau_K = c / (rho/tau + 4 mu / h_K^2).");
+      prm.declare_entry("Ghost penalty",
+                        "0.1",
+                        Patterns::Double(0),
+                        "Factor gamma of the ghost penalty on the faces of "
+                        "cells cut by the free surface (see doc/method.md): "
+                        "it keeps a cell with a small liquid part as well "
+                        "conditioned as a whole one. 0 switches it off.");
     }
     prm.leave_subsection();
 
@@ -536,6 +543,7 @@ namespace vefs
     solver_tolerance       = prm.get_double("Tolerance");
     solver_max_iterations  = prm.get_integer("Maximum iterations");
     pressure_stabilization = prm.get_double("Pressure stabilization");
+    ghost_penalty          = prm.get_double("Ghost penalty");
     amg_smoother_sweeps    = prm.get_integer("AMG smoother sweeps");
     prm.leave_subsection();
 

@@ -14,7 +14,7 @@ namespace vefs
   void
   measure_step(const Parameters             &parameters,
                const TransportedFields<dim> &fields,
-               const Vector<float>          &liquid_fraction,
+               const LiquidDomain<dim>      &domain,
                const double                  initial_volume,
                const double                  expected_volume,
                StepStatistics<dim>          &s)
@@ -31,27 +31,27 @@ namespace vefs
     for (unsigned int d = 0; d < dim; ++d)
       gravity[d] = parameters.gravity[d];
 
-    const QGauss<dim>                quadrature(2);
-    FEValues<dim>                    fe_values(fields.mapping,
-                            fields.fe,
-                            quadrature,
-                            update_values | update_quadrature_points |
-                              update_JxW_values);
+    // The energies over the liquid as the flow step sees it.
+    LiquidValues<dim>                liquid_values(domain,
+                                    fields.mapping,
+                                    fields.fe,
+                                    update_values | update_quadrature_points |
+                                      update_JxW_values);
     const FEValuesExtractors::Vector velocity(0);
-    std::vector<Tensor<1, dim>>      u(quadrature.size());
+    std::vector<Tensor<1, dim>>      u;
 
     double       kinetic = 0, potential = 0, liquid_volume = 0, max_speed = 0;
     unsigned int liquid_cells = 0;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          is_liquid(liquid_fraction[cell->active_cell_index()]))
+      if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
           ++liquid_cells;
-          liquid_volume += cell->measure();
-          fe_values.reinit(cell);
+          const FEValues<dim> &fe_values = liquid_values.reinit(cell);
+          u.resize(fe_values.n_quadrature_points);
           fe_values[velocity].get_function_values(fields.fields, u);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
+              liquid_volume += fe_values.JxW(q);
               kinetic += 0.5 * parameters.density * u[q].norm_square() *
                          fe_values.JxW(q);
               potential -= parameters.density * gravity *
@@ -259,14 +259,14 @@ namespace vefs
   template void
   measure_step<2>(const Parameters &,
                   const TransportedFields<2> &,
-                  const Vector<float> &,
+                  const LiquidDomain<2> &,
                   const double,
                   const double,
                   StepStatistics<2> &);
   template void
   measure_step<3>(const Parameters &,
                   const TransportedFields<3> &,
-                  const Vector<float> &,
+                  const LiquidDomain<3> &,
                   const double,
                   const double,
                   StepStatistics<3> &);

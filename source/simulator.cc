@@ -355,12 +355,12 @@ namespace vefs
         statistics = resume();
     }
 
-    Vector<float> liquid_fraction = liquid_fractions(fields);
+    LiquidDomain<dim> domain(fields);
     if (!prescribed_velocity)
-      flow.setup(liquid_fraction, statistics.time);
+      flow.setup(domain, statistics.time);
     // A resumed run has the row of its first step already.
     if (checkpoint.empty())
-      report(statistics, liquid_fraction);
+      report(statistics, domain);
     else
       pcout << "resumed at step " << statistics.step
             << " (t = " << statistics.time << ") from " << checkpoint << "/"
@@ -382,7 +382,7 @@ namespace vefs
                                                  cfl,
                                                  statistics.max_velocity);
         if (!problem.empty())
-          stop(statistics.step + 1, statistics, problem, liquid_fraction, true);
+          stop(statistics.step + 1, statistics, problem, domain, true);
         ++statistics.step;
         statistics.tau = tau;
         statistics.cfl = cfl;
@@ -412,7 +412,7 @@ namespace vefs
           TimerOutput::Scope scope(timer, "2 mesh adaptation");
           levels.expect_cfl(expected_cfl);
           adapt_mesh(triangulation, fields, levels, 1);
-          liquid_fraction = liquid_fractions(fields);
+          domain = LiquidDomain<dim>(fields);
         }
 
         // 3. Diffusion: the Stokes-like step on the liquid cells, then
@@ -428,7 +428,7 @@ namespace vefs
             try
               {
                 statistics.linear_iterations =
-                  diffusion_step(liquid_fraction,
+                  diffusion_step(domain,
                                  statistics.time + tau,
                                  tau,
                                  expected_cfl);
@@ -438,16 +438,12 @@ namespace vefs
                 failure = error.what();
               }
             if (!failure.empty())
-              stop(statistics.step,
-                   statistics,
-                   failure,
-                   liquid_fraction,
-                   false);
+              stop(statistics.step, statistics, failure, domain, false);
             expected_volume -= tau * flow.outflow_rate();
           }
 
         statistics.time += tau;
-        report(statistics, liquid_fraction);
+        report(statistics, domain);
         if (const auto end = checkpoint_if_due(statistics, steps_done))
           return *end;
       }
@@ -456,15 +452,15 @@ namespace vefs
 
   template <int dim>
   unsigned int
-  Simulator<dim>::diffusion_step(const Vector<float> &liquid_fraction,
-                                 const double         new_time,
-                                 const double         tau,
-                                 const double         expected_cfl)
+  Simulator<dim>::diffusion_step(const LiquidDomain<dim> &domain,
+                                 const double             new_time,
+                                 const double             tau,
+                                 const double             expected_cfl)
   {
     unsigned int iterations = 0;
     {
       TimerOutput::Scope scope(timer, "3 diffusion: setup");
-      flow.setup(liquid_fraction, new_time);
+      flow.setup(domain, new_time);
     }
     // Contact walls: solve again while the contact set changes (design
     // section 4); a few times at the most.
@@ -494,7 +490,7 @@ namespace vefs
       if (rheology.has_stress())
         {
           TimerOutput::Scope scope(timer, "4 stress update");
-          update_stress(fields, liquid_fraction, rheology, tau);
+          update_stress(fields, domain, rheology, tau);
         }
       const unsigned int layers =
         std::max<unsigned int>(parameters.extension_layers,
@@ -506,14 +502,14 @@ namespace vefs
 
   template <int dim>
   void
-  Simulator<dim>::report(StepStatistics<dim> &statistics,
-                         const Vector<float> &liquid_fraction)
+  Simulator<dim>::report(StepStatistics<dim>     &statistics,
+                         const LiquidDomain<dim> &domain)
   {
     {
       TimerOutput::Scope scope(timer, "postprocessing");
       measure_step(parameters,
                    fields,
-                   liquid_fraction,
+                   domain,
                    initial_volume,
                    expected_volume,
                    statistics);
@@ -522,9 +518,8 @@ namespace vefs
       statistics.contact_measure = flow.contact_measure();
       if (rheology.has_stress())
         {
-          const StressMeasure stress =
-            measure_stress(fields, liquid_fraction, rheology);
-          statistics.elastic_energy = stress.elastic_energy;
+          const StressMeasure stress = measure_stress(fields, domain, rheology);
+          statistics.elastic_energy  = stress.elastic_energy;
           statistics.min_conformation_eigenvalue =
             stress.min_conformation_eigenvalue;
           statistics.non_positive_conformation_points =
@@ -544,7 +539,7 @@ namespace vefs
               : std::numeric_limits<double>::quiet_NaN();
           statistics.interface_thickness =
             interface_thickness(fields,
-                                liquid_fraction,
+                                liquid_fractions(fields),
                                 statistics.surface_area,
                                 levels.finest_cell_size);
         }
@@ -558,7 +553,7 @@ namespace vefs
                       statistics,
                       statistics_file.non_finite_column(statistics));
       if (!problem.empty())
-        stop(statistics.step, statistics, problem, liquid_fraction, false);
+        stop(statistics.step, statistics, problem, domain, false);
     }
     statistics_file.write(statistics);
 
@@ -567,7 +562,7 @@ namespace vefs
          is_last_step(statistics)))
       {
         TimerOutput::Scope scope(timer, "output");
-        visualization.write(fields, flow, liquid_fraction, statistics.time);
+        visualization.write(fields, flow, domain.fractions(), statistics.time);
         last_output_step = statistics.step;
       }
 
@@ -591,13 +586,13 @@ namespace vefs
   Simulator<dim>::stop(const unsigned int         step,
                        const StepStatistics<dim> &statistics,
                        const std::string         &problem,
-                       const Vector<float>       &liquid_fraction,
+                       const LiquidDomain<dim>   &domain,
                        const bool                 state_is_good)
   {
     // Keep the state the run ended with for a look, if it can be shown.
     const bool written = state_is_good && last_output_step == statistics.step;
     if (!written && fields_are_finite(fields))
-      visualization.write(fields, flow, liquid_fraction, statistics.time);
+      visualization.write(fields, flow, domain.fractions(), statistics.time);
     std::string what = problem;
     while (!what.empty() && what.back() == '.')
       what.pop_back();

@@ -1,3 +1,5 @@
+#include <deal.II/non_matching/fe_immersed_values.h>
+
 #include <vefs/stokes_cell_system.h>
 
 namespace vefs
@@ -7,20 +9,23 @@ namespace vefs
                                           const Rheology<dim>      &rheology,
                                           const FiniteElement<dim> &flow_fe,
                                           const TransportedFields<dim> &fields,
+                                          const LiquidDomain<dim>      &domain,
                                           const double                  tau)
     : parameters(parameters)
     , rheology(rheology)
     , fields(fields)
+    , domain(domain)
+    , flow_fe(flow_fe)
     , tau(tau)
     , mu(rheology.effective_viscosity(tau))
     , kept(rheology.stress_factor(tau))
-    , quadrature(2)
-    , fe_values(flow_fe,
-                quadrature,
+    , fe_values(domain,
+                fields.mapping,
+                flow_fe,
                 update_values | update_gradients | update_JxW_values)
-    , advected(fields.mapping,
+    , advected(domain,
+               fields.mapping,
                fields.fe,
-               quadrature,
                update_values | update_gradients)
   {
     for (unsigned int d = 0; d < dim; ++d)
@@ -33,7 +38,6 @@ namespace vefs
     regularization = 1e-3 / diameter_squared;
 
     const unsigned int n_dofs = flow_fe.n_dofs_per_cell();
-    const unsigned int n_q    = quadrature.size();
     matrix.reinit(n_dofs, n_dofs);
     schur.reinit(n_dofs, n_dofs);
     rhs.reinit(n_dofs);
@@ -41,9 +45,6 @@ namespace vefs
     component.resize(n_dofs);
     for (unsigned int i = 0; i < n_dofs; ++i)
       component[i] = flow_fe.system_to_component_index(i).first;
-    u_star.resize(n_q);
-    sigma_star.resize(n_q);
-    div_sigma_star.resize(n_q);
     stretching.resize(n_dofs);
     phi_u.resize(n_dofs);
     eps_u.resize(n_dofs);
@@ -65,14 +66,19 @@ namespace vefs
     const unsigned int n_dofs      = matrix.m();
     const double       rho         = parameters.density;
 
-    fe_values.reinit(cell);
-    advected.reinit(fields.cell_of(cell));
-    advected[velocity].get_function_values(fields.fields, u_star);
+    const FEValues<dim> &values = fe_values.reinit(cell);
+    const FEValues<dim> &advected_values =
+      advected.reinit(fields.cell_of(cell));
+    const unsigned int n_q = values.n_quadrature_points;
+    u_star.resize(n_q);
+    advected_values[velocity].get_function_values(fields.fields, u_star);
     if (with_stress)
       {
-        advected[stress].get_function_values(fields.fields, sigma_star);
-        advected[stress].get_function_divergences(fields.fields,
-                                                  div_sigma_star);
+        sigma_star.resize(n_q);
+        div_sigma_star.resize(n_q);
+        advected_values[stress].get_function_values(fields.fields, sigma_star);
+        advected_values[stress].get_function_divergences(fields.fields,
+                                                         div_sigma_star);
       }
 
     const double h = cell->minimum_vertex_distance();
@@ -84,17 +90,25 @@ namespace vefs
     schur         = 0;
     rhs           = 0;
     pressure_mass = 0;
-    for (const unsigned int q : fe_values.quadrature_point_indices())
+    // The lumped mass of the whole cell: a small cut must not make the
+    // preconditioner's M_p^-1 large.
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      if (component[i] == dim)
+        pressure_mass(i) = cell->measure() / cell->n_vertices() / mu;
+    if (domain.location(cell) == LiquidDomain<dim>::Location::cut)
+      add_surface_penalty(cell, h);
+
+    for (const unsigned int q : values.quadrature_point_indices())
       {
         for (unsigned int k = 0; k < n_dofs; ++k)
           {
-            phi_u[k]  = fe_values[velocity].value(k, q);
-            eps_u[k]  = fe_values[velocity].symmetric_gradient(k, q);
-            div_u[k]  = fe_values[velocity].divergence(k, q);
-            phi_p[k]  = fe_values[pressure].value(k, q);
-            grad_p[k] = fe_values[pressure].gradient(k, q);
+            phi_u[k]  = values[velocity].value(k, q);
+            eps_u[k]  = values[velocity].symmetric_gradient(k, q);
+            div_u[k]  = values[velocity].divergence(k, q);
+            phi_p[k]  = values[pressure].value(k, q);
+            grad_p[k] = values[pressure].gradient(k, q);
           }
-        const double   JxW     = fe_values.JxW(q);
+        const double   JxW     = values.JxW(q);
         Tensor<1, dim> forcing = rho / tau * u_star[q] + rho * gravity;
         // The explicit part of the stress, k div sigma* (k = kept), is a
         // force in the strong residual of the pressure stabilisation.
@@ -107,7 +121,7 @@ namespace vefs
             for (unsigned int j = 0; j < n_dofs; ++j)
               if (component[j] < dim)
                 stretching[j] =
-                  2 * kept * tau * fe_values[velocity].gradient(j, q) * sigma;
+                  2 * kept * tau * values[velocity].gradient(j, q) * sigma;
           }
         // Only the blocks that can be non-zero: this loop is most of
         // the assembly, in 3D especially.
@@ -147,9 +161,35 @@ namespace vefs
               JxW;
             if (with_stress && i_is_u)
               rhs(i) -= kept * sigma_star[q] * eps_u[i] * JxW;
-            pressure_mass(i) += phi_p[i] / mu * JxW;
           }
       }
+  }
+
+  template <int dim>
+  void
+  StokesCellSystem<dim>::add_surface_penalty(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const double                                          h)
+  {
+    // In the Schur preconditioner the pressure vanishes on the free
+    // surface (zero traction): a penalty there keeps L_w regular.
+    NonMatching::FEImmersedSurfaceValues<dim> surface_values(
+      fields.mapping,
+      flow_fe,
+      domain.cut_cell(cell).surface,
+      update_values | update_JxW_values);
+    surface_values.reinit(cell);
+    const FEValuesExtractors::Scalar pressure(dim);
+    const unsigned int               n_dofs = matrix.m();
+    for (const unsigned int q : surface_values.quadrature_point_indices())
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        if (component[i] == dim)
+          for (unsigned int j = 0; j < n_dofs; ++j)
+            if (component[j] == dim)
+              schur(i, j) += surface_penalty * schur_weight / h *
+                             surface_values[pressure].value(i, q) *
+                             surface_values[pressure].value(j, q) *
+                             surface_values.JxW(q);
   }
 
   template class StokesCellSystem<2>;

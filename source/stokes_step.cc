@@ -14,6 +14,7 @@
 #include <deal.II/numerics/vector_tools_boundary.h>
 
 #include <vefs/free_surface.h>
+#include <vefs/ghost_penalty.h>
 #include <vefs/initial_liquid.h>
 #include <vefs/stokes_cell_system.h>
 #include <vefs/stokes_step.h>
@@ -115,35 +116,25 @@ namespace vefs
 
   template <int dim>
   bool
-  StokesStep<dim>::is_free_surface(
+  StokesStep<dim>::is_open_wall(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const unsigned int                                    face) const
   {
-    if (cell->at_boundary(face))
-      return parameters.wall_type[cell->face(face)->boundary_id()] ==
+    return cell->at_boundary(face) &&
+           parameters.wall_type[cell->face(face)->boundary_id()] ==
              WallType::open;
-    if (cell->face(face)->has_children())
-      {
-        for (unsigned int s = 0; s < cell->face(face)->n_children(); ++s)
-          if (cell->neighbor_child_on_subface(face, s)->active_fe_index() !=
-              liquid_index)
-            return true;
-        return false;
-      }
-    return cell->neighbor(face)->active_fe_index() != liquid_index;
   }
 
   template <int dim>
   void
-  StokesStep<dim>::setup(const Vector<float> &liquid_fraction,
-                         const double         new_time)
+  StokesStep<dim>::setup(const LiquidDomain<dim> &domain, const double new_time)
   {
-    time = new_time;
+    time         = new_time;
+    this->domain = &domain;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        cell->set_active_fe_index(
-          is_liquid(liquid_fraction[cell->active_cell_index()]) ? liquid_index
-                                                                : empty_index);
+        cell->set_active_fe_index(domain.has_liquid(cell) ? liquid_index
+                                                          : empty_index);
     dof_handler.distribute_dofs(fe_collection);
 
     std::vector<unsigned int> block_component(dim + 1, 0);
@@ -202,7 +193,12 @@ namespace vefs
         "': the liquid meets empty space across the periodic walls; a free "
         "surface that crosses a periodic wall is not supported in this "
         "version: the liquid must meet liquid there (at t = " +
-        Utilities::to_string(time) + " s)");
+        [this]() {
+          std::ostringstream t;
+          t << std::setprecision(6) << time;
+          return t.str();
+        }() +
+        " s)");
   }
 
   template <int dim>
@@ -253,6 +249,20 @@ namespace vefs
                                     constraints,
                                     keep_constrained_rows,
                                     Utilities::MPI::this_mpi_process(comm));
+    // The ghost penalty couples the two cells of a face.
+    GhostPenalty<dim> ghost_penalty(parameters,
+                                    rheology,
+                                    fe_collection[liquid_index],
+                                    1.);
+    ghost_penalty.for_each_face(
+      dof_handler,
+      *domain,
+      false,
+      [&](const auto &, const auto &, const auto &dofs) {
+        constraints.add_entries_local_to_global(dofs,
+                                                pattern,
+                                                keep_constrained_rows);
+      });
     pattern.compress();
     system_matrix.clear();
     system_matrix.reinit(pattern);
@@ -271,6 +281,13 @@ namespace vefs
                                     constraints,
                                     false,
                                     Utilities::MPI::this_mpi_process(comm));
+    ghost_penalty.for_each_face(
+      dof_handler,
+      *domain,
+      false,
+      [&](const auto &, const auto &, const auto &dofs) {
+        constraints.add_entries_local_to_global(dofs, schur_pattern, false);
+      });
     schur_pattern.compress();
     schur_matrix.clear();
     schur_matrix.reinit(schur_pattern);
@@ -345,6 +362,7 @@ namespace vefs
                                 rheology,
                                 fe_collection[liquid_index],
                                 fields,
+                                *domain,
                                 tau);
     const QGauss<dim - 1>            face_quadrature(2);
     FEFaceValues<dim>                face_values(fe_collection[liquid_index],
@@ -361,20 +379,20 @@ namespace vefs
           local.compute(cell);
           const double h = cell->minimum_vertex_distance();
 
-          // In the Schur preconditioner the pressure vanishes on the free
-          // surface (zero traction): a penalty there keeps L_w regular.
+          // In the Schur preconditioner the pressure vanishes on an open
+          // wall as on the free surface.
           for (const unsigned int f : cell->face_indices())
-            if (is_free_surface(cell, f))
+            if (is_open_wall(cell, f))
               {
                 face_values.reinit(cell, f);
                 for (const unsigned int q :
                      face_values.quadrature_point_indices())
                   for (unsigned int i = 0; i < dofs_per_cell; ++i)
                     for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                      local.schur(i, j) += 10 * local.schur_weight / h *
-                                           face_values[pressure].value(i, q) *
-                                           face_values[pressure].value(j, q) *
-                                           face_values.JxW(q);
+                      local.schur(i, j) +=
+                        local.surface_penalty * local.schur_weight / h *
+                        face_values[pressure].value(i, q) *
+                        face_values[pressure].value(j, q) * face_values.JxW(q);
               }
 
           cell->get_dof_indices(dof_indices);
@@ -390,6 +408,26 @@ namespace vefs
                                                  dof_indices,
                                                  lumped_pressure_mass);
         }
+
+    GhostPenalty<dim> ghost_penalty(parameters,
+                                    rheology,
+                                    fe_collection[liquid_index],
+                                    tau);
+    Vector<double>    no_rhs;
+    ghost_penalty.for_each_face(
+      dof_handler,
+      *domain,
+      true,
+      [&](const auto &matrix, const auto &schur, const auto &dofs) {
+        // Through the right-hand side, so that wall velocities act.
+        no_rhs.reinit(dofs.size());
+        constraints.distribute_local_to_global(matrix,
+                                               no_rhs,
+                                               dofs,
+                                               system_matrix,
+                                               system_rhs);
+        constraints.distribute_local_to_global(schur, dofs, schur_matrix);
+      });
     system_matrix.compress(VectorOperation::add);
     schur_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
@@ -503,8 +541,18 @@ namespace vefs
                                 rheology,
                                 fe_collection[liquid_index],
                                 fields,
+                                *domain,
                                 tau);
-    if (!contact.update(dof_handler, solution, local, liquid_index))
+    GhostPenalty<dim>     ghost_penalty(parameters,
+                                    rheology,
+                                    fe_collection[liquid_index],
+                                    tau);
+    if (!contact.update(dof_handler,
+                        *domain,
+                        solution,
+                        local,
+                        ghost_penalty,
+                        liquid_index))
       return false;
     make_constraints();
     return true;

@@ -32,10 +32,10 @@ namespace vefs
 
   template <int dim>
   void
-  update_stress(TransportedFields<dim> &fields,
-                const Vector<float>    &liquid_fraction,
-                const Rheology<dim>    &rheology,
-                const double            tau)
+  update_stress(TransportedFields<dim>  &fields,
+                const LiquidDomain<dim> &domain,
+                const Rheology<dim>     &rheology,
+                const double             tau)
   {
     using VectorType = typename TransportedFields<dim>::VectorType;
     constexpr unsigned int first =
@@ -55,8 +55,7 @@ namespace vefs
     const FEValuesExtractors::Vector velocity(0);
     std::vector<Tensor<2, dim>> grad_u(GeometryInfo<dim>::vertices_per_cell);
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          is_liquid(liquid_fraction[cell->active_cell_index()]))
+      if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
           vertex_values.reinit(cell);
           vertex_values[velocity].get_function_gradients(fields.fields, grad_u);
@@ -91,24 +90,23 @@ namespace vefs
   template <int dim>
   StressMeasure
   measure_stress(const TransportedFields<dim> &fields,
-                 const Vector<float>          &liquid_fraction,
+                 const LiquidDomain<dim>      &domain,
                  const Rheology<dim>          &rheology)
   {
-    const QGauss<dim>                            quadrature(2);
-    FEValues<dim>                                fe_values(fields.mapping,
-                            fields.fe,
-                            quadrature,
-                            update_values | update_JxW_values);
+    LiquidValues<dim>                            liquid_values(domain,
+                                    fields.mapping,
+                                    fields.fe,
+                                    update_values | update_JxW_values);
     const FEValuesExtractors::SymmetricTensor<2> stress(
       TransportedFields<dim>::first_stress_component);
-    std::vector<SymmetricTensor<2, dim>> sigma(quadrature.size());
+    std::vector<SymmetricTensor<2, dim>> sigma;
 
     StressMeasure measure;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          is_liquid(liquid_fraction[cell->active_cell_index()]))
+      if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
-          fe_values.reinit(cell);
+          const FEValues<dim> &fe_values = liquid_values.reinit(cell);
+          sigma.resize(fe_values.n_quadrature_points);
           fe_values[stress].get_function_values(fields.fields, sigma);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             {
@@ -134,20 +132,20 @@ namespace vefs
 
   template void
   update_stress<2>(TransportedFields<2> &,
-                   const Vector<float> &,
+                   const LiquidDomain<2> &,
                    const Rheology<2> &,
                    const double);
   template void
   update_stress<3>(TransportedFields<3> &,
-                   const Vector<float> &,
+                   const LiquidDomain<3> &,
                    const Rheology<3> &,
                    const double);
   template StressMeasure
   measure_stress<2>(const TransportedFields<2> &,
-                    const Vector<float> &,
+                    const LiquidDomain<2> &,
                     const Rheology<2> &);
   template StressMeasure
   measure_stress<3>(const TransportedFields<3> &,
-                    const Vector<float> &,
+                    const LiquidDomain<3> &,
                     const Rheology<3> &);
 } // namespace vefs

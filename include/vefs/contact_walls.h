@@ -6,6 +6,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <vefs/ghost_penalty.h>
 #include <vefs/parameters.h>
 #include <vefs/stokes_cell_system.h>
 
@@ -52,15 +53,18 @@ namespace vefs
 
     /**
      * Reactions from the unconstrained residual of @p solution (cell by
-     * cell with @p local), then the active-set update. Returns true if the
+     * cell with @p local, face by face with @p ghost_penalty), then the
+     * active-set update. Returns true if the
      * set changed anywhere (then constraints must be made again). Also
      * measures the contact force and the contact length (area in 3D).
      */
     bool
-    update(const DoFHandler<dim> &dof_handler,
-           const BlockVector     &solution,
-           StokesCellSystem<dim> &local,
-           const unsigned int     liquid_index);
+    update(const DoFHandler<dim>   &dof_handler,
+           const LiquidDomain<dim> &domain,
+           const BlockVector       &solution,
+           StokesCellSystem<dim>   &local,
+           GhostPenalty<dim>       &ghost_penalty,
+           const unsigned int       liquid_index);
 
     /** Normal force of the walls on the liquid (N, N/m in 2D), >= 0. */
     double force = 0;

@@ -39,17 +39,11 @@ namespace vefs
 
   /**
    * Liquid volume fraction of every locally owned and ghost cell, indexed by
-   * active_cell_index(). A cell with fraction >= 1/2 is a liquid cell.
+   * active_cell_index(), from the smoothed indicator of measure_liquid().
    */
   template <int dim>
   Vector<float>
   liquid_fractions(const TransportedFields<dim> &fields);
-
-  inline bool
-  is_liquid(const float fraction)
-  {
-    return fraction >= 0.5f;
-  }
 
   /**
    * L1 error of the liquid region, int |phi - phi_exact|, with phi_exact the
@@ -62,8 +56,9 @@ namespace vefs
               const Function<dim>          &exact_level_set);
 
   /**
-   * Thickness of the free surface as the flow sees it: the volume of the
-   * partly filled cells (0.01 < fraction < 0.99) per unit @p surface_area
+   * Thickness of the free surface in the transport's smoothed indicator
+   * (the fractions of liquid_fractions()): the volume of the partly filled
+   * cells (0.01 < fraction < 0.99) per unit @p surface_area
    * (from measure_liquid(), so that the surface is not measured twice),
    * divided by the finest cell size. About one for a sharp surface.
    */

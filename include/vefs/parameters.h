@@ -129,6 +129,7 @@ namespace vefs
     double       solver_tolerance;
     unsigned int solver_max_iterations;
     double       pressure_stabilization;
+    double       ghost_penalty;
     unsigned int amg_smoother_sweeps;
 
     std::string prescribed_velocity;

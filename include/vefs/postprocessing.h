@@ -4,6 +4,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <vefs/box_mesh_locator.h>
+#include <vefs/liquid_domain.h>
 #include <vefs/parameters.h>
 #include <vefs/transported_fields.h>
 
@@ -72,7 +73,7 @@ namespace vefs
   void
   measure_step(const Parameters             &parameters,
                const TransportedFields<dim> &fields,
-               const Vector<float>          &liquid_fraction,
+               const LiquidDomain<dim>      &domain,
                const double                  initial_volume,
                const double                  expected_volume,
                StepStatistics<dim>          &statistics);

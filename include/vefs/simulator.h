@@ -8,6 +8,7 @@
 
 #include <vefs/box_mesh_locator.h>
 #include <vefs/checkpoint.h>
+#include <vefs/liquid_domain.h>
 #include <vefs/mesh_adaptation.h>
 #include <vefs/output_directory.h>
 #include <vefs/parameters.h>
@@ -100,10 +101,10 @@ namespace vefs
      * cells wide: returns the Krylov iterations.
      */
     unsigned int
-    diffusion_step(const Vector<float> &liquid_fraction,
-                   const double         new_time,
-                   const double         tau,
-                   const double         expected_cfl);
+    diffusion_step(const LiquidDomain<dim> &domain,
+                   const double             new_time,
+                   const double             tau,
+                   const double             expected_cfl);
 
     /** The regime and the mode, for the banner. */
     std::string
@@ -117,8 +118,7 @@ namespace vefs
 
     /** Measure, check the health of and write the state of a step. */
     void
-    report(StepStatistics<dim> &statistics,
-           const Vector<float> &liquid_fraction);
+    report(StepStatistics<dim> &statistics, const LiquidDomain<dim> &domain);
 
     /**
      * Stop the run at @p step with @p problem: write the current state if
@@ -129,7 +129,7 @@ namespace vefs
     stop(const unsigned int         step,
          const StepStatistics<dim> &statistics,
          const std::string         &problem,
-         const Vector<float>       &liquid_fraction,
+         const LiquidDomain<dim>   &domain,
          const bool                 state_is_good);
 
     const Parameters &parameters;

@@ -6,6 +6,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <vefs/liquid_domain.h>
 #include <vefs/parameters.h>
 #include <vefs/rheology.h>
 #include <vefs/transported_fields.h>
@@ -13,12 +14,16 @@
 namespace vefs
 {
   /**
-   * The weak form of the diffusion step on one liquid cell (design section
-   * 2, step 3), Q1-Q1 with PSPG: the cell matrix and right-hand side, and
-   * the two pieces of the Schur-complement preconditioner (the pressure
-   * Laplacian weighted by tau/rho + tau_K, and the lumped pressure mass
-   * divided by mu). The rheology supplies mu, k and the advected stress
-   * terms. Used by the assembly and by the reactions of contact walls.
+   * The weak form of the diffusion step on the liquid part of one cell
+   * (design section 2, step 3), Q1-Q1 with PSPG: the cell matrix and
+   * right-hand side, and the two pieces of the Schur-complement
+   * preconditioner (the pressure Laplacian weighted by tau/rho + tau_K, with
+   * a penalty for p = 0 on the free surface, and the lumped pressure mass
+   * of the whole cell divided by mu). On a cut cell the integrals run over
+   * the liquid part only; the free surface needs no term of its own, zero
+   * traction being the natural condition. The rheology supplies mu, k and the
+   * advected stress terms. Used by the assembly and by the reactions of contact
+   * walls.
    */
   template <int dim>
   class StokesCellSystem
@@ -28,9 +33,10 @@ namespace vefs
                      const Rheology<dim>          &rheology,
                      const FiniteElement<dim>     &flow_fe,
                      const TransportedFields<dim> &fields,
+                     const LiquidDomain<dim>      &domain,
                      const double                  tau);
 
-    /** Compute the members below for the liquid @p cell. */
+    /** Compute the members below for the @p cell, which holds liquid. */
     void
     compute(const typename DoFHandler<dim>::active_cell_iterator &cell);
 
@@ -41,19 +47,30 @@ namespace vefs
     /** tau/rho + tau_K of the cell, the weight of the Schur Laplacian. */
     double schur_weight = 0;
 
+    /** Weight of the penalty for p = 0 on the free surface, times
+     * schur_weight / h. */
+    static constexpr double surface_penalty = 10;
+
   private:
+    /** The free-surface penalty of the Schur preconditioner on a cut cell. */
+    void
+    add_surface_penalty(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const double                                          h);
+
     const Parameters             &parameters;
     const Rheology<dim>          &rheology;
     const TransportedFields<dim> &fields;
+    const LiquidDomain<dim>      &domain;
+    const FiniteElement<dim>     &flow_fe;
     const double                  tau;
     const double                  mu;
     const double                  kept;
     Tensor<1, dim>                gravity;
     double                        regularization;
 
-    const QGauss<dim> quadrature;
-    FEValues<dim>     fe_values;
-    FEValues<dim>     advected;
+    LiquidValues<dim> fe_values;
+    LiquidValues<dim> advected;
 
     std::vector<unsigned int>            component;
     std::vector<Tensor<1, dim>>          u_star;

@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <vefs/contact_walls.h>
+#include <vefs/liquid_domain.h>
 #include <vefs/parameters.h>
 #include <vefs/rheology.h>
 #include <vefs/transported_fields.h>
@@ -27,11 +28,14 @@ namespace vefs
 
   /**
    * The diffusion (correction) step of the splitting, design section 2,
-   * step 3, for a Newtonian liquid: the Stokes-like problem
-   *   rho (u - u*)/tau - div(2 mu eps(u)) + grad p = rho g,  div u = 0
-   * on the liquid cells only. Elements: Q1-Q1 with consistent pressure
-   * stabilisation (PSPG) on liquid cells, FE_Nothing elsewhere, so that the
-   * free surface carries the natural zero-traction condition.
+   * step 3: the Stokes-like problem
+   *   rho (u - u*)/tau - div(2 mu eps(u) + k sigma*) + grad p = rho g,
+   *   div u = 0
+   * on the liquid domain psi < 0, cut out of the cells the free surface
+   * crosses (LiquidDomain), so that the surface itself carries the natural
+   * zero-traction condition. Elements: Q1-Q1 with consistent pressure
+   * stabilisation (PSPG) on every cell that holds liquid, FE_Nothing
+   * elsewhere, and a ghost penalty on the faces of cut cells.
    */
   template <int dim>
   class StokesStep
@@ -42,9 +46,9 @@ namespace vefs
     StokesStep(const Parameters                                &parameters,
                const parallel::distributed::Triangulation<dim> &triangulation);
 
-    /** Flow unknowns on the cells whose liquid fraction is >= 1/2. */
+    /** Flow unknowns on the cells of @p domain that hold liquid. */
     void
-    setup(const Vector<float> &liquid_fraction, const double time);
+    setup(const LiquidDomain<dim> &domain, const double time);
 
     /** Assemble with u* = the advected velocity of @p fields. */
     void
@@ -139,10 +143,10 @@ namespace vefs
     void
     make_matrices();
 
-    /** A liquid cell's face on the free surface or on an open wall. */
+    /** A face of a cell on an open wall. */
     bool
-    is_free_surface(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                    const unsigned int face) const;
+    is_open_wall(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                 const unsigned int face) const;
 
     const Parameters                             &parameters;
     const MPI_Comm                                comm;
@@ -163,6 +167,8 @@ namespace vefs
     ContactWalls<dim>                   contact;
     /** Time of the step being solved (for the wall velocities). */
     double time = 0;
+    /** The liquid of the step being solved, from setup(). */
+    const LiquidDomain<dim> *domain = nullptr;
   };
 } // namespace vefs
 

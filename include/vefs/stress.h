@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <vefs/liquid_domain.h>
 #include <vefs/rheology.h>
 #include <vefs/transported_fields.h>
 
@@ -19,10 +20,10 @@ namespace vefs
    */
   template <int dim>
   void
-  update_stress(TransportedFields<dim> &fields,
-                const Vector<float>    &liquid_fraction,
-                const Rheology<dim>    &rheology,
-                const double            tau);
+  update_stress(TransportedFields<dim>  &fields,
+                const LiquidDomain<dim> &domain,
+                const Rheology<dim>     &rheology,
+                const double             tau);
 
   /** What the statistics report of the stress. */
   struct StressMeasure
@@ -38,7 +39,7 @@ namespace vefs
   template <int dim>
   StressMeasure
   measure_stress(const TransportedFields<dim> &fields,
-                 const Vector<float>          &liquid_fraction,
+                 const LiquidDomain<dim>      &domain,
                  const Rheology<dim>          &rheology);
 } // namespace vefs
 

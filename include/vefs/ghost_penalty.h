@@ -1,0 +1,73 @@
+#ifndef vefs_ghost_penalty_h
+#define vefs_ghost_penalty_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_interface_values.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <vefs/liquid_domain.h>
+#include <vefs/parameters.h>
+#include <vefs/rheology.h>
+
+#include <functional>
+
+namespace vefs
+{
+  /**
+   * The ghost penalty (Burman 2010) that keeps the flow step of a cut cell
+   * as well posed as that of a whole one, however small its liquid part: on
+   * each face between a cut cell and another cell with liquid, the jumps of
+   * the normal derivatives of velocity and pressure,
+   *   gamma (mu + rho h^2 / tau) h int_F [d_n u] . [d_n v]
+   *   - gamma tau_K h int_F [d_n p] [d_n q],
+   * and the same pressure term, weighted like the Schur Laplacian, in the
+   * preconditioner. Both vanish for fields linear across the face, so a
+   * liquid at rest under gravity is still exactly at rest.
+   */
+  template <int dim>
+  class GhostPenalty
+  {
+  public:
+    /**
+     * One face: the interface matrices of the system and of the Schur
+     * preconditioner, and the degrees of freedom of both cells.
+     */
+    using FaceAction =
+      std::function<void(const FullMatrix<double>                   &matrix,
+                         const FullMatrix<double>                   &schur,
+                         const std::vector<types::global_dof_index> &dofs)>;
+
+    GhostPenalty(const Parameters         &parameters,
+                 const Rheology<dim>      &rheology,
+                 const FiniteElement<dim> &flow_fe,
+                 const double              tau);
+
+    /**
+     * Call @p action for every face of a locally owned cut cell with liquid
+     * on the other side. A face between two cut cells is seen from both,
+     * with half the weight each time (the other side may be on another
+     * rank). With @p matrices_wanted false the matrices are left zero: for
+     * the sparsity pattern.
+     */
+    void
+    for_each_face(const DoFHandler<dim>   &dof_handler,
+                  const LiquidDomain<dim> &domain,
+                  const bool               matrices_wanted,
+                  const FaceAction        &action);
+
+  private:
+    /** The matrices of the face of the last reinit(), times @p weight. */
+    void
+    compute(const typename DoFHandler<dim>::active_cell_iterator &cell,
+            const double                                          weight);
+
+    const Parameters      &parameters;
+    const double           tau;
+    const double           mu;
+    FEInterfaceValues<dim> interface_values;
+    FullMatrix<double>     matrix;
+    FullMatrix<double>     schur;
+  };
+} // namespace vefs
+
+#endif

@@ -1,0 +1,130 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <vefs/ghost_penalty.h>
+
+namespace vefs
+{
+  template <int dim>
+  GhostPenalty<dim>::GhostPenalty(const Parameters         &parameters,
+                                  const Rheology<dim>      &rheology,
+                                  const FiniteElement<dim> &flow_fe,
+                                  const double              tau)
+    : parameters(parameters)
+    , tau(tau)
+    , mu(rheology.effective_viscosity(tau))
+    , interface_values(flow_fe,
+                       QGauss<dim - 1>(2),
+                       update_gradients | update_normal_vectors |
+                         update_JxW_values)
+  {
+  }
+
+  template <int dim>
+  void
+  GhostPenalty<dim>::for_each_face(const DoFHandler<dim>   &dof_handler,
+                                   const LiquidDomain<dim> &domain,
+                                   const bool               matrices_wanted,
+                                   const FaceAction        &action)
+  {
+    using Location   = typename LiquidDomain<dim>::Location;
+    const auto visit = [&](const auto        &cell,
+                           const unsigned int face,
+                           const unsigned int subface,
+                           const auto        &neighbor,
+                           const unsigned int neighbor_face,
+                           const unsigned int neighbor_subface) {
+      if (!domain.has_liquid(neighbor))
+        return;
+      interface_values
+        .reinit(cell, face, subface, neighbor, neighbor_face, neighbor_subface);
+      const unsigned int n = interface_values.n_current_interface_dofs();
+      matrix.reinit(n, n);
+      schur.reinit(n, n);
+      if (matrices_wanted)
+        compute(cell, domain.location(neighbor) == Location::cut ? 0.5 : 1.);
+      action(matrix, schur, interface_values.get_interface_dof_indices());
+    };
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && domain.location(cell) == Location::cut)
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (cell->at_boundary(f))
+              continue;
+            if (cell->face(f)->has_children())
+              {
+                const unsigned int neighbor_face = cell->neighbor_face_no(f);
+                for (unsigned int s = 0; s < cell->face(f)->n_children(); ++s)
+                  visit(cell,
+                        f,
+                        s,
+                        cell->neighbor_child_on_subface(f, s),
+                        neighbor_face,
+                        numbers::invalid_unsigned_int);
+              }
+            else if (cell->neighbor_is_coarser(f))
+              {
+                const auto [neighbor_face, neighbor_subface] =
+                  cell->neighbor_of_coarser_neighbor(f);
+                visit(cell,
+                      f,
+                      numbers::invalid_unsigned_int,
+                      cell->neighbor(f),
+                      neighbor_face,
+                      neighbor_subface);
+              }
+            else
+              visit(cell,
+                    f,
+                    numbers::invalid_unsigned_int,
+                    cell->neighbor(f),
+                    cell->neighbor_of_neighbor(f),
+                    numbers::invalid_unsigned_int);
+          }
+  }
+
+  template <int dim>
+  void
+  GhostPenalty<dim>::compute(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const double                                          weight)
+  {
+    const double rho   = parameters.density;
+    const double gamma = parameters.ghost_penalty * weight;
+    const double h     = cell->minimum_vertex_distance();
+    const double tau_K =
+      parameters.pressure_stabilization / (rho / tau + 4 * mu / (h * h));
+    const double velocity_weight = gamma * (mu + rho * h * h / tau) * h;
+    const double pressure_weight = gamma * tau_K * h;
+    const double schur_weight    = gamma * (tau / rho + tau_K) * h;
+
+    const FEValuesExtractors::Vector velocity(0);
+    const FEValuesExtractors::Scalar pressure(dim);
+    const unsigned int          n = interface_values.n_current_interface_dofs();
+    std::vector<Tensor<1, dim>> jump_u(n);
+    std::vector<double>         jump_p(n);
+    for (const unsigned int q : interface_values.quadrature_point_indices())
+      {
+        const Tensor<1, dim> normal = interface_values.normal(q);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            jump_u[i] =
+              interface_values[velocity].jump_in_gradients(i, q) * normal;
+            jump_p[i] =
+              interface_values[pressure].jump_in_gradients(i, q) * normal;
+          }
+        const double JxW = interface_values.JxW(q);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              matrix(i, j) += (velocity_weight * jump_u[i] * jump_u[j] -
+                               pressure_weight * jump_p[i] * jump_p[j]) *
+                              JxW;
+              schur(i, j) += schur_weight * jump_p[i] * jump_p[j] * JxW;
+            }
+      }
+  }
+
+  template class GhostPenalty<2>;
+  template class GhostPenalty<3>;
+} // namespace vefs
