@@ -1,10 +1,12 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
+#include <vefs/checkpoint.h>
 #include <vefs/parameter_file.h>
 #include <vefs/parameters.h>
 #include <vefs/simulator.h>
 #include <vefs/stokes_step.h>
+#include <vefs/stop_signal.h>
 
 #include <iostream>
 #include <sstream>
@@ -13,6 +15,7 @@ namespace
 {
   const char *usage =
     "Usage: vefs [options] [scene.prm]\n"
+    "       vefs [options] --resume DIR\n"
     "\n"
     "Simulates the free-surface flow described by scene.prm (deal.II\n"
     "ParameterHandler format). Without a file, runs the default scene: the\n"
@@ -21,7 +24,11 @@ namespace
     "\n"
     "Options:\n"
     "  -h, --help            this text\n"
-    "  --print-parameters    every entry with its default and documentation\n";
+    "  --print-parameters    every entry with its default and documentation\n"
+    "  --resume DIR          continue the run whose output directory is DIR\n"
+    "                        from its last checkpoint (DIR/checkpoint/), with\n"
+    "                        the parameters saved there, on any number of\n"
+    "                        ranks\n";
 
   /** The text a deal.II exception carries for the user, without its trace. */
   std::string
@@ -37,38 +44,43 @@ namespace
   }
 
   /**
-   * Run the scene; returns the error that stopped it, or nothing. The
-   * error is caught while the simulator still exists, so that it closes
-   * normally (its timer would otherwise complain about unwinding).
+   * Run the scene; returns how it ended, with status 1 and the error if
+   * one stopped it. The error is caught while the simulator still exists,
+   * so that it closes normally (its timer would otherwise complain about
+   * unwinding).
    */
   template <int dim>
-  std::string
+  vefs::RunEnd
   simulate(const vefs::Parameters         &parameters,
            const dealii::ParameterHandler &prm,
-           const std::string              &where)
+           const std::string              &where,
+           const std::string              &checkpoint)
   {
-    vefs::Simulator<dim> simulator(parameters, prm);
+    vefs::Simulator<dim> simulator(parameters, prm, checkpoint);
     try
       {
-        simulator.run();
+        return simulator.run();
       }
     catch (const vefs::InputError &error)
       {
-        return "error in " + where + ": " + error.what();
+        return {1, "error in " + where + ": " + error.what()};
       }
     catch (const vefs::SolverError &error)
       {
-        return error.what();
+        return {1, error.what()};
+      }
+    catch (const vefs::CheckpointError &error)
+      {
+        return {1, error.what()};
       }
     catch (const dealii::ExceptionBase &error)
       {
-        return message_of(error);
+        return {1, message_of(error)};
       }
     catch (const std::exception &error)
       {
-        return error.what();
+        return {1, error.what()};
       }
-    return "";
   }
 } // namespace
 
@@ -80,7 +92,7 @@ main(int argc, char *argv[])
 
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool  root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  std::string file;
+  std::string file, resume_directory;
   auto        fail = [&](const std::string &what) {
     if (root)
       std::cerr << "vefs: " << what << std::endl;
@@ -104,12 +116,38 @@ main(int argc, char *argv[])
             prm.print_parameters(std::cout, ParameterHandler::PRM);
           return 0;
         }
+      if (argument == "--resume")
+        {
+          if (i + 1 == argc)
+            return fail("option --resume needs the output directory of the "
+                        "run to continue\n" +
+                        std::string(usage));
+          resume_directory = argv[++i];
+          continue;
+        }
       if (!argument.empty() && argument[0] == '-')
         return fail("unknown option '" + argument + "'\n" + usage);
       if (!file.empty())
         return fail("more than one parameter file given\n" +
                     std::string(usage));
       file = argument;
+    }
+
+  if (!resume_directory.empty() && !file.empty())
+    return fail("option --resume takes the parameters from the checkpoint: "
+                "give no parameter file");
+  std::string checkpoint;
+  if (!resume_directory.empty())
+    {
+      try
+        {
+          checkpoint = find_checkpoint(resume_directory);
+        }
+      catch (const InputError &error)
+        {
+          return fail(error.what());
+        }
+      file = checkpoint + "/parameters.prm";
     }
 
   const std::string where =
@@ -122,6 +160,9 @@ main(int argc, char *argv[])
           check_parameter_file(file);
           prm.parse_input(file);
         }
+      // The directory may have moved since the checkpoint.
+      if (!resume_directory.empty())
+        prm.set("Output directory", resume_directory);
       parameters.parse(prm);
       if (root)
         for (const auto &warning : parameters.warnings)
@@ -139,13 +180,19 @@ main(int argc, char *argv[])
       return fail("error in " + where + ": " + message_of(error));
     }
 
+  install_stop_handlers();
   try
     {
-      const std::string error = parameters.dimension == 2
-                                  ? simulate<2>(parameters, prm, where)
-                                  : simulate<3>(parameters, prm, where);
-      if (!error.empty())
-        return fail(error);
+      const RunEnd end = parameters.dimension == 2
+                           ? simulate<2>(parameters, prm, where, checkpoint)
+                           : simulate<3>(parameters, prm, where, checkpoint);
+      if (end.status != 0)
+        {
+          fail(end.message);
+          return end.status;
+        }
+      if (root && !end.message.empty())
+        std::cout << "vefs: " << end.message << std::endl;
     }
   catch (const InputError &error)
     {

@@ -1,11 +1,16 @@
 #include <deal.II/base/mpi.h>
 
 #include <unistd.h>
+#include <vefs/checkpoint.h>
 #include <vefs/output_directory.h>
 #include <vefs/parameters.h>
 
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iostream>
 #include <system_error>
 
 namespace vefs
@@ -25,14 +30,39 @@ namespace vefs
                name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
       };
       return name == "statistics" || name == "parameters.prm" ||
-             name == "solution.pvd" ||
+             name == "solution.pvd" || name == CheckpointNames::current ||
+             name == CheckpointNames::next ||
+             name == CheckpointNames::previous ||
              (name.rfind("solution_", 0) == 0 &&
               (ends_with(".vtu") || ends_with(".pvtu")));
     }
 
+    std::string
+    host_name()
+    {
+      char name[256] = {};
+      gethostname(name, sizeof(name) - 1);
+      return name;
+    }
+
+    /**
+     * A lock left by a killed run: it names a process of this host that no
+     * longer exists. A lock of another host, or unreadable, is kept.
+     */
+    bool
+    is_stale(const std::string &lock)
+    {
+      std::ifstream input(lock);
+      long          pid = 0;
+      std::string   host;
+      if (!(input >> pid >> host) || pid <= 0 || host != host_name())
+        return false;
+      return kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+    }
+
     /** Rank 0's work; returns what went wrong, or nothing. */
     std::string
-    prepare(const std::string &directory, bool &locked)
+    prepare(const std::string &directory, const bool resume, bool &locked)
     {
       const std::string entry = "entry 'Output directory': ";
       std::error_code   error;
@@ -44,6 +74,14 @@ namespace vefs
       const std::string lock = directory + "/" + lock_name;
       // "x": fails if the file exists, atomically (C11).
       std::FILE *file = std::fopen(lock.c_str(), "wx");
+      if (file == nullptr && is_stale(lock))
+        {
+          std::cerr << "vefs: warning: removed the lock file '" << lock
+                    << "' of a run that no longer runs (it was killed)"
+                    << std::endl;
+          fs::remove(lock, error);
+          file = std::fopen(lock.c_str(), "wx");
+        }
       if (file == nullptr)
         return entry + (fs::exists(lock)
                           ? "'" + lock +
@@ -51,13 +89,20 @@ namespace vefs
                               "directory (if none is, a run was killed: "
                               "remove the file)"
                           : "cannot write into '" + directory + "'");
-      std::fprintf(file, "%ld\n", static_cast<long>(getpid()));
+      // Who holds the lock: a later run can tell a killed one.
+      std::fprintf(file,
+                   "%ld %s\n",
+                   static_cast<long>(getpid()),
+                   host_name().c_str());
       std::fclose(file);
       locked = true;
 
+      // A resumed run continues the results it finds.
+      if (resume)
+        return "";
       for (const auto &file : fs::directory_iterator(directory, error))
         if (is_result(file.path().filename().string()))
-          fs::remove(file.path(), error);
+          fs::remove_all(file.path(), error);
       if (error)
         return entry + "cannot remove the results of an earlier run from '" +
                directory + "': " + error.message();
@@ -66,12 +111,13 @@ namespace vefs
   } // namespace
 
   OutputDirectory::OutputDirectory(const std::string &directory,
-                                   const MPI_Comm     comm)
+                                   const MPI_Comm     comm,
+                                   const bool         resume)
     : directory(directory)
   {
     std::string problem;
     if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
-      problem = prepare(directory, locked);
+      problem = prepare(directory, resume, locked);
     // Every rank learns the outcome: none waits for a rank that stopped.
     problem = dealii::Utilities::MPI::broadcast(comm, problem, 0);
     if (!problem.empty())

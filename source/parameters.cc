@@ -440,6 +440,36 @@ namespace vefs
     }
     prm.leave_subsection();
 
+    prm.enter_subsection("Checkpoint");
+    {
+      prm.declare_entry("Interval steps",
+                        "0",
+                        Patterns::Integer(0),
+                        "Write a checkpoint (mesh, fields, time and "
+                        "statistics position, into <Output directory>/"
+                        "checkpoint) after every step whose number is a "
+                        "multiple of this; 0: never. A run continues from "
+                        "its last checkpoint with 'vefs --resume <Output "
+                        "directory>', also on another number of MPI ranks.");
+      prm.declare_entry("Interval minutes",
+                        "60",
+                        Patterns::Double(0),
+                        "Also write a checkpoint after the step that ends "
+                        "this many minutes of wall time after the start (or "
+                        "the last checkpoint); 0: never. A SIGTERM or SIGINT "
+                        "always writes one after the current step.");
+      prm.declare_entry("Stop after steps",
+                        "0",
+                        Patterns::Integer(0),
+                        "If positive: after this many steps of this "
+                        "invocation (counted from the start or from the "
+                        "resumed step), write a checkpoint and stop with "
+                        "exit status 0 (for jobs with a wall-time limit: "
+                        "each job resumes the last one and does this many "
+                        "steps); 0: run to the end time.");
+    }
+    prm.leave_subsection();
+
     prm.enter_subsection("Output");
     {
       prm.declare_entry("Interval",
@@ -538,6 +568,12 @@ namespace vefs
 
     prm.enter_subsection("Postprocess");
     probe_point = to_doubles(prm.get("Probe point"));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Checkpoint");
+    checkpoint_interval_steps   = prm.get_integer("Interval steps");
+    checkpoint_interval_minutes = prm.get_double("Interval minutes");
+    stop_after_steps            = prm.get_integer("Stop after steps");
     prm.leave_subsection();
 
     prm.enter_subsection("Output");

@@ -1,6 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <vefs/checkpoint.h>
 #include <vefs/free_surface.h>
 #include <vefs/postprocessing.h>
 
@@ -110,9 +111,12 @@ namespace vefs
 
   template <int dim>
   StatisticsFile<dim>::StatisticsFile(const std::string &directory,
-                                      const MPI_Comm     comm)
+                                      const MPI_Comm     comm,
+                                      const bool         resume)
+    : path(directory + "/statistics")
+    , comm(comm)
   {
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
+    if (!resume && Utilities::MPI::this_mpi_process(comm) == 0)
       {
         file.open(directory + "/statistics");
         if (!file)
@@ -171,6 +175,66 @@ namespace vefs
   }
 
   template <int dim>
+  std::string
+  StatisticsFile<dim>::column_header() const
+  {
+    std::string header = "#";
+    for (const auto &column : columns)
+      header += ' ' + column.name;
+    return header;
+  }
+
+  template <int dim>
+  void
+  StatisticsFile<dim>::resume(const unsigned int step)
+  {
+    Assert(!header_written, ExcMessage("Resume before the first row."));
+    std::string problem;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ifstream            input(path);
+        std::vector<std::string> kept;
+        bool                     has_header = false, reached = false;
+        for (std::string line; !reached && std::getline(input, line);)
+          {
+            if (line == column_header())
+              has_header = true;
+            else if (line.empty() || line[0] != '#')
+              {
+                // The step is the first column.
+                const unsigned long row_step =
+                  std::strtoul(line.c_str(), nullptr, 10);
+                if (row_step > step)
+                  break;
+                reached = row_step == step;
+              }
+            kept.push_back(line);
+          }
+        if (!input.is_open())
+          problem = "cannot read '" + path + "'";
+        else if (!has_header)
+          problem = "'" + path + "' does not have the columns of this scene";
+        else if (!reached)
+          problem = "'" + path + "' ends before the step " +
+                    std::to_string(step) + " of the checkpoint";
+        else
+          {
+            input.close();
+            file.open(path, std::ios::trunc);
+            for (const auto &line : kept)
+              file << line << '\n';
+            file.flush();
+            if (!file)
+              problem = "cannot write '" + path + "'";
+          }
+      }
+    problem = Utilities::MPI::broadcast(comm, problem, 0);
+    if (!problem.empty())
+      throw CheckpointError("option --resume: " + problem);
+    header_written = true;
+  }
+
+  template <int dim>
   void
   StatisticsFile<dim>::write(const StepStatistics<dim> &row)
   {
@@ -183,10 +247,7 @@ namespace vefs
                 "initial volume - inflow through the walls) / initial volume; "
                 "floor_extent: largest x of liquid on the floor; "
                 "wall_height: highest liquid on the x- wall.\n"
-             << "#";
-        for (const auto &column : columns)
-          file << ' ' << column.name;
-        file << '\n';
+             << column_header() << '\n';
         header_written = true;
       }
     for (unsigned int c = 0; c < columns.size(); ++c)

@@ -8,6 +8,7 @@
 #include <vefs/initial_liquid.h>
 #include <vefs/redistancing.h>
 #include <vefs/simulator.h>
+#include <vefs/stop_signal.h>
 #include <vefs/stress.h>
 
 #include <filesystem>
@@ -16,13 +17,27 @@
 
 namespace vefs
 {
+  namespace
+  {
+    std::string
+    printed(const ParameterHandler &prm)
+    {
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::PRM);
+      return text.str();
+    }
+  } // namespace
+
   template <int dim>
   Simulator<dim>::Simulator(const Parameters       &parameters,
-                            const ParameterHandler &prm)
+                            const ParameterHandler &prm,
+                            const std::string      &checkpoint)
     : parameters(parameters)
+    , parameters_text(printed(prm))
+    , checkpoint(checkpoint)
     , rheology(parameters)
     , comm(MPI_COMM_WORLD)
-    , output(parameters.output_directory, comm)
+    , output(parameters.output_directory, comm, !checkpoint.empty())
     , pcout(std::cout,
             parameters.verbose && Utilities::MPI::this_mpi_process(comm) == 0)
     , timer(comm,
@@ -38,7 +53,7 @@ namespace vefs
              rheology.has_stress(),
              parameters.periodic_directions())
     , flow(parameters, triangulation)
-    , statistics_file(output.path(), comm)
+    , statistics_file(output.path(), comm, !checkpoint.empty())
     , visualization(parameters.output_directory)
   {
     if (parameters.velocity_is_prescribed())
@@ -49,7 +64,7 @@ namespace vefs
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::ofstream file(parameters.output_directory + "/parameters.prm");
-        prm.print_parameters(file, ParameterHandler::PRM);
+        file << parameters_text;
       }
   }
 
@@ -135,7 +150,6 @@ namespace vefs
                                                     cavity,
                                                     subdivisions,
                                                     parameters.wall_type);
-    triangulation.refine_global(parameters.min_level);
   }
 
   template <int dim>
@@ -145,6 +159,7 @@ namespace vefs
     const auto level_set = make_initial_level_set<dim>(parameters);
     const auto velocity  = make_initial_velocity<dim>(parameters);
     const auto stress    = make_initial_stress<dim>(parameters);
+    triangulation.refine_global(parameters.min_level);
     fields.setup_dofs();
     // Refine toward the initial surface, evaluating it exactly on each mesh.
     do
@@ -165,6 +180,94 @@ namespace vefs
     if (!(initial_volume > 0))
       throw InputError("entry 'Initial liquid/Shape': the initial liquid "
                        "does not intersect the cavity");
+  }
+
+  template <int dim>
+  StepStatistics<dim>
+  Simulator<dim>::resume()
+  {
+    const RunState<dim> state =
+      read_checkpoint(checkpoint, triangulation, fields);
+    initial_volume   = state.initial_volume;
+    expected_volume  = state.expected_volume;
+    last_output_step = state.last_output_step;
+    wall_time_offset = state.statistics.wall_time;
+    visualization.resume(state.visualization_series);
+    statistics_file.resume(state.statistics.step);
+    return state.statistics;
+  }
+
+  template <int dim>
+  std::optional<RunEnd>
+  Simulator<dim>::checkpoint_if_due(const StepStatistics<dim> &statistics,
+                                    const unsigned int         steps_done)
+  {
+    if (is_last_step(statistics))
+      return {};
+    // Every rank takes the same decision.
+    const int  signal       = Utilities::MPI::max(received_stop_signal(), comm);
+    const bool planned_stop = parameters.stop_after_steps > 0 &&
+                              steps_done >= parameters.stop_after_steps;
+    const bool by_steps =
+      parameters.checkpoint_interval_steps > 0 &&
+      statistics.step % parameters.checkpoint_interval_steps == 0;
+    const bool by_time =
+      Utilities::MPI::logical_or(parameters.checkpoint_interval_minutes > 0 &&
+                                   since_checkpoint.wall_time() >=
+                                     60 *
+                                       parameters.checkpoint_interval_minutes,
+                                 comm);
+    if (signal == 0 && !planned_stop && !by_steps && !by_time)
+      return {};
+
+    std::string problem;
+    {
+      TimerOutput::Scope  scope(timer, "checkpoint");
+      const RunState<dim> state{statistics,
+                                initial_volume,
+                                expected_volume,
+                                last_output_step,
+                                visualization.get_series()};
+      Timer               writing;
+      problem = write_checkpoint(parameters.output_directory,
+                                 parameters_text,
+                                 fields,
+                                 state);
+      if (problem.empty())
+        pcout << "checkpoint of step " << statistics.step << " written in "
+              << std::setprecision(3) << writing.wall_time() << " s"
+              << std::endl;
+    }
+    since_checkpoint.restart();
+    const std::string directory =
+      parameters.output_directory + "/" + CheckpointNames::current;
+    std::ostringstream where;
+    where << "step " << statistics.step << " (t = " << statistics.time << ")";
+    if (!problem.empty())
+      {
+        const std::string failure =
+          "the checkpoint of " + where.str() + " was not written: " + problem;
+        if (signal != 0 || planned_stop)
+          throw SolverError(failure + "; the statistics end with step " +
+                            std::to_string(statistics.step));
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          std::cerr << "vefs: warning: " << failure << std::endl;
+        return {};
+      }
+    const std::string resume_hint = "; the checkpoint is in " + directory +
+                                    "/, continue with: vefs --resume " +
+                                    parameters.output_directory;
+    if (signal != 0)
+      return RunEnd{128 + signal,
+                    std::string("stopped by ") + signal_name(signal) +
+                      " after " + where.str() + resume_hint};
+    if (planned_stop)
+      return RunEnd{0,
+                    "stopped after " + where.str() + ", " +
+                      std::to_string(steps_done) +
+                      " steps as set by 'Checkpoint/Stop after steps'" +
+                      resume_hint};
+    return {};
   }
 
   template <int dim>
@@ -236,25 +339,34 @@ namespace vefs
   }
 
   template <int dim>
-  void
+  RunEnd
   Simulator<dim>::run()
   {
     pcout << "vefs: " << dim << "D " << description() << " on "
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s), output in "
           << parameters.output_directory << "/" << std::endl;
+    StepStatistics<dim> statistics;
     {
       TimerOutput::Scope scope(timer, "initial state");
       make_cavity();
-      set_initial_state();
+      if (checkpoint.empty())
+        set_initial_state();
+      else
+        statistics = resume();
     }
 
-    LiquidDomain<dim>   domain(fields);
-    StepStatistics<dim> statistics;
+    LiquidDomain<dim> domain(fields);
     if (!prescribed_velocity)
-      flow.setup(domain, 0);
-    report(statistics, domain);
+      flow.setup(domain, statistics.time);
+    // A resumed run has the row of its first step already.
+    if (checkpoint.empty())
+      report(statistics, domain);
+    else
+      pcout << "resumed at step " << statistics.step
+            << " (t = " << statistics.time << ") from " << checkpoint << "/"
+            << std::endl;
 
-    while (!is_last_step(statistics))
+    for (unsigned int steps_done = 1; !is_last_step(statistics); ++steps_done)
       {
         const double tau =
           prescribed_velocity
@@ -332,7 +444,10 @@ namespace vefs
 
         statistics.time += tau;
         report(statistics, domain);
+        if (const auto end = checkpoint_if_due(statistics, steps_done))
+          return *end;
       }
+    return {};
   }
 
   template <int dim>
@@ -428,7 +543,7 @@ namespace vefs
                                 statistics.surface_area,
                                 levels.finest_cell_size);
         }
-      statistics.wall_time = wall_clock.wall_time();
+      statistics.wall_time = wall_time_offset + wall_clock.wall_time();
     }
     {
       TimerOutput::Scope scope(timer, "health check");

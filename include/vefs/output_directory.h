@@ -10,15 +10,19 @@ namespace vefs
   /**
    * The 'Output directory' of a run, held for the lifetime of this object:
    * created if missing, locked by the file vefs.lock (a second run into
-   * the same directory is refused), and cleared of the results of an
+   * the same directory is refused; the lock of a killed process of this
+   * host is taken over), and cleared of the results of an
    * earlier run (solution*.vtu/pvtu, solution.pvd, statistics,
-   * parameters.prm), so that the files of two runs never mix. Every
-   * problem throws InputError on all ranks.
+   * parameters.prm, the checkpoint directories), so that the files of two
+   * runs never mix; a @p resume keeps them. Every problem throws InputError
+   * on all ranks.
    */
   class OutputDirectory
   {
   public:
-    OutputDirectory(const std::string &directory, const MPI_Comm comm);
+    OutputDirectory(const std::string &directory,
+                    const MPI_Comm     comm,
+                    const bool         resume = false);
     ~OutputDirectory();
 
     OutputDirectory(const OutputDirectory &) = delete;

@@ -150,6 +150,12 @@ namespace vefs
     std::vector<unsigned int>
     periodic_directions() const;
 
+    unsigned int checkpoint_interval_steps;
+    /** 0: no checkpoints by wall time. */
+    double checkpoint_interval_minutes;
+    /** 0: no planned stop. */
+    unsigned int stop_after_steps;
+
     unsigned int output_interval;
     bool         verbose;
 

@@ -89,8 +89,22 @@ namespace vefs
   public:
     using Reader = std::function<double(const StepStatistics<dim> &)>;
 
-    /** The file, with the columns every scene has. */
-    StatisticsFile(const std::string &directory, const MPI_Comm comm);
+    /**
+     * The file, with the columns every scene has; emptied unless it is for
+     * a @p resume (then resume() follows the columns).
+     */
+    StatisticsFile(const std::string &directory,
+                   const MPI_Comm     comm,
+                   const bool         resume = false);
+
+    /**
+     * Continue the file of the run being resumed: keep its rows up to
+     * @p step (those written after the checkpoint are dropped) and append.
+     * Throws CheckpointError on all ranks if the file does not have the
+     * columns of this scene or ends before @p step.
+     */
+    void
+    resume(const unsigned int step);
 
     /**
      * Add a column; before the first row only. A column that is not
@@ -122,6 +136,12 @@ namespace vefs
       bool         finite_every_step;
     };
 
+    /** The header line of the columns. */
+    std::string
+    column_header() const;
+
+    const std::string   path;
+    const MPI_Comm      comm;
     std::vector<Column> columns;
     bool                header_written = false;
     std::ofstream       file;

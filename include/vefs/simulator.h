@@ -7,6 +7,7 @@
 #include <deal.II/distributed/tria.h>
 
 #include <vefs/box_mesh_locator.h>
+#include <vefs/checkpoint.h>
 #include <vefs/liquid_domain.h>
 #include <vefs/mesh_adaptation.h>
 #include <vefs/output_directory.h>
@@ -17,6 +18,9 @@
 #include <vefs/transported_fields.h>
 #include <vefs/visualization.h>
 
+#include <optional>
+#include <string>
+
 namespace vefs
 {
   /**
@@ -25,13 +29,29 @@ namespace vefs
    * characteristics, mesh adaptation to the new surface, diffusion on the
    * liquid cells.
    */
+  /** How a run ended, if not by an error. */
+  struct RunEnd
+  {
+    /** The exit status: 0, or 128 + the signal that stopped the run. */
+    int status = 0;
+    /** Where the run stopped and how to continue it; "" if it finished. */
+    std::string message;
+  };
+
   template <int dim>
   class Simulator
   {
   public:
-    Simulator(const Parameters &parameters, const ParameterHandler &prm);
+    /**
+     * A new run; or, with @p checkpoint (a directory from find_checkpoint()),
+     * the continuation of the run that wrote it, with the parameters it
+     * saved.
+     */
+    Simulator(const Parameters       &parameters,
+              const ParameterHandler &prm,
+              const std::string      &checkpoint = "");
 
-    void
+    RunEnd
     run();
 
   private:
@@ -47,6 +67,19 @@ namespace vefs
 
     void
     set_initial_state();
+
+    /** The state of the checkpoint: mesh, fields, statistics, outputs. */
+    StepStatistics<dim>
+    resume();
+
+    /**
+     * After a step: write a checkpoint if one is due (by the step number,
+     * the wall time, a stop signal or 'Stop after steps', the @p steps_done
+     * by this invocation); a returned RunEnd stops the run.
+     */
+    std::optional<RunEnd>
+    checkpoint_if_due(const StepStatistics<dim> &statistics,
+                      const unsigned int         steps_done);
 
     double
     choose_time_step(const double max_velocity) const;
@@ -99,7 +132,11 @@ namespace vefs
          const LiquidDomain<dim>   &domain,
          const bool                 state_is_good);
 
-    const Parameters   &parameters;
+    const Parameters &parameters;
+    /** The parameters as run, for parameters.prm and the checkpoints. */
+    const std::string parameters_text;
+    /** Empty for a new run. */
+    const std::string   checkpoint;
     const Rheology<dim> rheology;
     const MPI_Comm      comm;
     /** Before the timer: its destructor must not see a failure here. */
@@ -121,6 +158,9 @@ namespace vefs
     double       expected_volume  = 0;
     unsigned int last_output_step = numbers::invalid_unsigned_int;
     Timer        wall_clock;
+    /** The wall time of the run before it was resumed. */
+    double wall_time_offset = 0;
+    Timer  since_checkpoint;
     /** Solves per step with contact walls, at the most. */
     static constexpr unsigned int max_contact_iterations = 10;
   };

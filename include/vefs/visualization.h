@@ -33,6 +33,20 @@ namespace vefs
       return series.empty() ? "" : series.back().second;
     }
 
+    /** The (time, .pvtu file) series of solution.pvd. */
+    const std::vector<std::pair<double, std::string>> &
+    get_series() const
+    {
+      return series;
+    }
+
+    /** Continue the series of a resumed run: the next file follows it. */
+    void
+    resume(const std::vector<std::pair<double, std::string>> &old_series)
+    {
+      series = old_series;
+    }
+
   private:
     const std::string                           directory;
     std::vector<std::pair<double, std::string>> series;
