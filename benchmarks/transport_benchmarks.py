@@ -90,6 +90,13 @@ CASES = {
         "dim": 2,
         "plot": "transport_zalesak_convergence.png",
     },
+    "vortex": {
+        "title": "Rider-Kothe single vortex (2D, T = 8)",
+        "prm": "prm/rider_kothe_vortex.prm",
+        "prefix": "rider_kothe_vortex",
+        "dim": 2,
+        "plot": "transport_vortex_convergence.png",
+    },
     "deformation": {
         "title": "3D deformation of a sphere (LeVeque, T = 3)",
         "prm": "prm/deformation_3d.prm",
@@ -102,7 +109,7 @@ CASES = {
 
 def run_list(case):
     """(L, CFL, correction) of the fixed runs of a case, in run order."""
-    if case == "zalesak":
+    if case in ("zalesak", "vortex"):
         return [(L, c, corr) for L in (6, 7, 8) for c in (1, 5, 10)
                 for corr in (True, False)]
     runs = [(L, c, True) for L in (5, 6) for c in (1, 5, 10)]
@@ -115,7 +122,12 @@ def run_name(case, L, cfl, corr):
                                 "corr" if corr else "nocorr")
 
 
+EXTRA_ENTRIES = []  # (section path, entry, value) from --set
+
+
 def make_prm(text, L, cfl, corr, output_dir):
+    for path, entry, value in EXTRA_ENTRIES:
+        text = set_entry(text, path, entry, value)
     text = set_entry(text, ["Mesh refinement"], "Maximum level", str(L))
     text = set_entry(text, ["Mesh refinement"], "Bulk level", str(L - 2))
     text = set_entry(text, ["Mesh refinement"], "Minimum level", str(L - 4))
@@ -424,7 +436,11 @@ def plot_case(rows, title, path):
 def parse_args(argv=None):
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--cases", nargs="+", choices=sorted(CASES),
-                   default=["zalesak", "deformation"])
+                   default=["zalesak", "vortex", "deformation"])
+    p.add_argument("--set", action="append", default=[],
+                   metavar="SECTION/ENTRY=VALUE",
+                   help="one more prm entry for every run, e.g. 'Mesh "
+                   "refinement/Level set interpolation=linear' (repeatable)")
     p.add_argument("--vefs", default="build/vefs")
     p.add_argument("--results-dir", default="benchmarks/results")
     p.add_argument("--doc", default="doc/transport.md")
@@ -523,6 +539,10 @@ def do_run(case, L, cfl, corr, args, vefs, results, base, provenance):
 
 def main(argv=None):
     args = parse_args(argv)
+    for item in args.set:
+        key, value = item.split("=", 1)
+        parts = key.split("/")
+        EXTRA_ENTRIES.append((parts[:-1], parts[-1], value))
     vefs = resolve(args.vefs)
     results = abs_in_repo(args.results_dir)
     doc = abs_in_repo(args.doc)

@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi_remote_point_evaluation.h>
-#include <deal.II/numerics/vector_tools_evaluate.h>
 
 #include <vefs/characteristics.h>
+#include <vefs/level_set_hermite.h>
 
 namespace vefs
 {
@@ -12,41 +12,103 @@ namespace vefs
     using FieldValues =
       Tensor<1, TransportedFields<dim>::max_components, double>;
 
-    /** The fields at @p points through RemotePointEvaluation. */
-    template <int dim, int n_components>
+    /**
+     * The fields at the unit-cell point @p xi of @p cell (locally owned or
+     * ghost): Q1, the level set by @p hermite if given.
+     */
+    template <int dim>
+    FieldValues<dim>
+    values_in_cell(
+      const typename Triangulation<dim>::active_cell_iterator &cell,
+      const Point<dim>                                        &xi,
+      const TransportedFields<dim>                            &fields,
+      const LevelSetHermite<dim>                              *hermite,
+      const bool                                               limited)
+    {
+      constexpr unsigned int level_set =
+        TransportedFields<dim>::level_set_component;
+      FieldValues<dim> values;
+      const auto       dof_cell = fields.cell_of(cell);
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
+          for (unsigned int c = 0; c < fields.n_components; ++c)
+            values[c] +=
+              weight * fields.fields(dof_cell->vertex_dof_index(v, c));
+        }
+      if (hermite)
+        values[level_set] = hermite->value(fields, dof_cell, xi, limited);
+      return values;
+    }
+
+    /**
+     * The fields at @p points, which may lie anywhere in the mesh, through
+     * RemotePointEvaluation: the ranks that own the cells evaluate them.
+     */
+    template <int dim>
     std::vector<FieldValues<dim>>
     evaluate_remotely(const std::vector<Point<dim>> &points,
-                      const TransportedFields<dim>  &fields)
+                      const TransportedFields<dim>  &fields,
+                      const LevelSetHermite<dim>    *hermite,
+                      const bool                     limited)
     {
       Utilities::MPI::RemotePointEvaluation<dim> evaluation;
-      evaluation.reinit(points,
-                        fields.dof_handler.get_triangulation(),
-                        fields.mapping);
+      const auto &triangulation = fields.dof_handler.get_triangulation();
+      evaluation.reinit(points, triangulation, fields.mapping);
       AssertThrow(evaluation.all_points_found(),
                   ExcMessage("A characteristic foot lies outside the mesh."));
-      const auto values =
-        VectorTools::point_values<n_components>(evaluation,
-                                                fields.dof_handler,
-                                                fields.fields);
+
+      using CellData =
+        typename Utilities::MPI::RemotePointEvaluation<dim>::CellData;
+      std::vector<FieldValues<dim>> evaluated, buffer;
+      evaluation.template evaluate_and_process<FieldValues<dim>>(
+        evaluated,
+        buffer,
+        [&](const ArrayView<FieldValues<dim>> &values,
+            const CellData                    &cell_data) {
+          for (unsigned int i = 0; i < cell_data.cells.size(); ++i)
+            {
+              const typename Triangulation<dim>::active_cell_iterator cell(
+                &triangulation,
+                cell_data.cells[i].first,
+                cell_data.cells[i].second);
+              for (unsigned int q = cell_data.reference_point_ptrs[i];
+                   q < cell_data.reference_point_ptrs[i + 1];
+                   ++q)
+                values[q] = values_in_cell(cell,
+                                           cell_data.reference_point_values[q],
+                                           fields,
+                                           hermite,
+                                           limited);
+            }
+        });
+
+      // A point on a cell boundary is found in every cell around it: take
+      // the mean of the (equal up to round-off) values.
+      const auto                   &ptrs = evaluation.get_point_ptrs();
       std::vector<FieldValues<dim>> result(points.size());
       for (unsigned int k = 0; k < points.size(); ++k)
-        for (unsigned int c = 0; c < n_components; ++c)
-          result[k][c] = values[k][c];
+        {
+          for (unsigned int j = ptrs[k]; j < ptrs[k + 1]; ++j)
+            result[k] += evaluated[j];
+          result[k] /= std::max(1u, ptrs[k + 1] - ptrs[k]);
+        }
       return result;
     }
 
     /**
      * The fields at arbitrary points: in the local part of the mesh (owned
-     * and ghost cells) by Q1 interpolation in the cell the locator finds,
-     * elsewhere through RemotePointEvaluation on the ranks that own them.
+     * and ghost cells) in the cell the locator finds, elsewhere through
+     * RemotePointEvaluation on the ranks that own them.
      */
     template <int dim>
     std::vector<FieldValues<dim>>
     evaluate_at(const std::vector<Point<dim>> &points,
                 const TransportedFields<dim>  &fields,
-                const BoxMeshLocator<dim>     &locator)
+                const BoxMeshLocator<dim>     &locator,
+                const LevelSetHermite<dim>    *hermite = nullptr,
+                const bool                     limited = false)
     {
-      const unsigned int            n_components = fields.n_components;
       std::vector<FieldValues<dim>> values(points.size());
       std::vector<unsigned int>     remote;
       for (unsigned int i = 0; i < points.size(); ++i)
@@ -57,16 +119,12 @@ namespace vefs
               remote.push_back(i);
               continue;
             }
-          const Point<dim> xi =
-            BoxMeshLocator<dim>::unit_point(cell, points[i]);
-          const auto dof_cell = fields.cell_of(cell);
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
-              for (unsigned int c = 0; c < n_components; ++c)
-                values[i][c] +=
-                  weight * fields.fields(dof_cell->vertex_dof_index(v, c));
-            }
+          values[i] =
+            values_in_cell(cell,
+                           BoxMeshLocator<dim>::unit_point(cell, points[i]),
+                           fields,
+                           hermite,
+                           limited);
         }
 
       const auto &triangulation = fields.dof_handler.get_triangulation();
@@ -78,11 +136,7 @@ namespace vefs
       for (const unsigned int i : remote)
         remote_points.push_back(points[i]);
       const auto remote_values =
-        fields.has_stress()
-          ? evaluate_remotely<dim, TransportedFields<dim>::max_components>(
-              remote_points,
-              fields)
-          : evaluate_remotely<dim, dim + 1>(remote_points, fields);
+        evaluate_remotely(remote_points, fields, hermite, limited);
       for (unsigned int k = 0; k < remote.size(); ++k)
         values[remote[k]] = remote_values[k];
       return values;
@@ -91,9 +145,10 @@ namespace vefs
 
   template <int dim>
   void
-  advect_along_characteristics(TransportedFields<dim>    &fields,
-                               const double               tau,
-                               const BoxMeshLocator<dim> &locator)
+  advect_along_characteristics(TransportedFields<dim>     &fields,
+                               const double                tau,
+                               const BoxMeshLocator<dim>  &locator,
+                               const LevelSetInterpolation interpolation)
   {
     const auto &nodes = fields.nodes();
 
@@ -113,7 +168,16 @@ namespace vefs
         beyond_contact[i]     = locator.distance_beyond_contact_walls(foot);
         points[i]             = locator.fold_into_cavity(foot);
       }
-    auto at_feet = evaluate_at(points, fields, locator);
+    LevelSetHermite<dim> hermite;
+    const bool           cubic = interpolation != LevelSetInterpolation::linear;
+    if (cubic)
+      hermite.recover(fields);
+    auto at_feet =
+      evaluate_at(points,
+                  fields,
+                  locator,
+                  cubic ? &hermite : nullptr,
+                  interpolation == LevelSetInterpolation::limited_cubic);
     // Liquid that leaves a contact wall leaves empty space behind: a foot
     // beyond the wall is that far outside the liquid.
     for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -131,9 +195,11 @@ namespace vefs
   template void
   advect_along_characteristics<2>(TransportedFields<2> &,
                                   const double,
-                                  const BoxMeshLocator<2> &);
+                                  const BoxMeshLocator<2> &,
+                                  const LevelSetInterpolation);
   template void
   advect_along_characteristics<3>(TransportedFields<3> &,
                                   const double,
-                                  const BoxMeshLocator<3> &);
+                                  const BoxMeshLocator<3> &,
+                                  const LevelSetInterpolation);
 } // namespace vefs

@@ -350,6 +350,17 @@ namespace vefs
                         "Every this many steps, make the level set a signed "
                         "distance again away from the surface (the surface "
                         "itself does not move); 0: never.");
+      prm.declare_entry("Level set interpolation",
+                        "cubic",
+                        Patterns::Selection("linear|cubic|limited cubic"),
+                        "How the level set is interpolated at the feet of "
+                        "the characteristics: linear (Q1, an O(h^2) error "
+                        "per step, so the surface smears as the steps "
+                        "shrink), cubic (tensor-product cubic Hermite with "
+                        "nodal derivatives recovered from the Q1 field), or "
+                        "limited cubic (cubic clipped to the range of the "
+                        "cell's nodal values). The other fields are always "
+                        "linear.");
       prm.declare_entry("Volume correction",
                         "true",
                         Patterns::Bool(),
@@ -500,6 +511,13 @@ namespace vefs
     extension_layers      = prm.get_integer("Extension layers");
     volume_correction     = prm.get_bool("Volume correction");
     redistancing_interval = prm.get_integer("Redistancing interval");
+    {
+      const std::string name  = prm.get("Level set interpolation");
+      level_set_interpolation = name == "linear" ? LevelSetInterpolation::linear
+                                : name == "cubic"
+                                  ? LevelSetInterpolation::cubic
+                                  : LevelSetInterpolation::limited_cubic;
+    }
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");

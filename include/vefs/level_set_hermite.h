@@ -1,0 +1,51 @@
+#ifndef vefs_level_set_hermite_h
+#define vefs_level_set_hermite_h
+
+#include <vefs/transported_fields.h>
+
+#include <array>
+
+namespace vefs
+{
+  /**
+   * Cubic Hermite interpolation of the Q1 level set inside a cell, for the
+   * values at the feet of the characteristics. Linear interpolation there
+   * loses O(h^2) per step, so the shape error grows like h^2/tau as the step
+   * shrinks; the tensor-product cubic Hermite interpolant loses O(h^4) with
+   * exact derivatives, O(h^3) with the recovered ones used here.
+   *
+   * The derivatives d^|S| psi / prod_{d in S} dx_d at the nodes, S a nonempty
+   * set of directions (the gradient, the mixed second derivatives and, in
+   * 3D, d^3/dxdydz), are recovered by averaging over the cells around a node
+   * the derivatives of the cells' Q1 interpolants: central differences on a
+   * uniform mesh, second order. The interpolant is continuous across cells.
+   */
+  template <int dim>
+  class LevelSetHermite
+  {
+  public:
+    /** Sets S are bit masks 1 .. 2^dim - 1; derivative S is stored at S-1. */
+    static constexpr unsigned int n_derivatives = (1u << dim) - 1;
+
+    /** Recover the nodal derivatives from the (ghosted) level set. */
+    void
+    recover(const TransportedFields<dim> &fields);
+
+    /**
+     * The level set at the unit-cell point @p xi of @p cell (locally owned
+     * or ghost). With @p limited the value is clipped to the range of the
+     * cell's nodal values, which keeps cubic overshoots out of kinks.
+     */
+    double
+    value(const TransportedFields<dim>                         &fields,
+          const typename DoFHandler<dim>::active_cell_iterator &cell,
+          const Point<dim>                                     &xi,
+          const bool                                            limited) const;
+
+  private:
+    std::array<typename TransportedFields<dim>::VectorType, n_derivatives>
+      derivatives;
+  };
+} // namespace vefs
+
+#endif
