@@ -2,19 +2,44 @@
 
 #include <vefs/characteristics.h>
 #include <vefs/level_set_hermite.h>
+#include <vefs/nodal_gradients.h>
 
 namespace vefs
 {
   namespace
   {
-    /** Values of all components of the fields at one point. */
+    /**
+     * Values of all components of the fields at one point, followed by
+     * extras (from index first_extra): the velocity gradient du_i/dx_j at
+     * first_extra + dim i + j, or the level set gradient.
+     */
     template <int dim>
     using FieldValues =
-      Tensor<1, TransportedFields<dim>::max_components, double>;
+      Tensor<1, TransportedFields<dim>::max_components + dim * dim, double>;
+
+    template <int dim>
+    constexpr unsigned int first_extra = TransportedFields<dim>::max_components;
+
+    /** How values_in_cell interpolates, and which extras it adds. */
+    template <int dim>
+    struct Interpolation
+    {
+      /** The level set by this Hermite interpolation, if not null. */
+      const LevelSetHermite<dim> *hermite = nullptr;
+      bool                        limited = false;
+      /** Extras: the gradient of the (Hermite) level set. */
+      bool level_set_gradient = false;
+      /**
+       * Extras: the velocity gradient, Q1 from these nodal gradients (see
+       * recover_nodal_gradients()), if not null.
+       */
+      const std::array<typename TransportedFields<dim>::VectorType, dim>
+        *velocity_gradient = nullptr;
+    };
 
     /**
      * The fields at the unit-cell point @p xi of @p cell (locally owned or
-     * ghost): Q1, the level set by @p hermite if given.
+     * ghost): Q1 unless @p how says otherwise.
      */
     template <int dim>
     FieldValues<dim>
@@ -22,8 +47,7 @@ namespace vefs
       const typename Triangulation<dim>::active_cell_iterator &cell,
       const Point<dim>                                        &xi,
       const TransportedFields<dim>                            &fields,
-      const LevelSetHermite<dim>                              *hermite,
-      const bool                                               limited)
+      const Interpolation<dim>                                &how)
     {
       constexpr unsigned int level_set =
         TransportedFields<dim>::level_set_component;
@@ -36,8 +60,29 @@ namespace vefs
             values[c] +=
               weight * fields.fields(dof_cell->vertex_dof_index(v, c));
         }
-      if (hermite)
-        values[level_set] = hermite->value(fields, dof_cell, xi, limited);
+      if (how.velocity_gradient)
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                values[first_extra<dim> + dim * i + j] +=
+                  weight *
+                  (*how.velocity_gradient)[j](dof_cell->vertex_dof_index(v, i));
+          }
+      if (how.hermite)
+        {
+          Tensor<1, dim> gradient;
+          values[level_set] =
+            how.hermite->value(fields,
+                               dof_cell,
+                               xi,
+                               how.limited,
+                               how.level_set_gradient ? &gradient : nullptr);
+          if (how.level_set_gradient)
+            for (unsigned int d = 0; d < dim; ++d)
+              values[first_extra<dim> + d] = gradient[d];
+        }
       return values;
     }
 
@@ -49,8 +94,7 @@ namespace vefs
     std::vector<FieldValues<dim>>
     evaluate_remotely(const std::vector<Point<dim>> &points,
                       const TransportedFields<dim>  &fields,
-                      const LevelSetHermite<dim>    *hermite,
-                      const bool                     limited)
+                      const Interpolation<dim>      &how)
     {
       Utilities::MPI::RemotePointEvaluation<dim> evaluation;
       const auto &triangulation = fields.dof_handler.get_triangulation();
@@ -78,8 +122,7 @@ namespace vefs
                 values[q] = values_in_cell(cell,
                                            cell_data.reference_point_values[q],
                                            fields,
-                                           hermite,
-                                           limited);
+                                           how);
             }
         });
 
@@ -106,8 +149,7 @@ namespace vefs
     evaluate_at(const std::vector<Point<dim>> &points,
                 const TransportedFields<dim>  &fields,
                 const BoxMeshLocator<dim>     &locator,
-                const LevelSetHermite<dim>    *hermite = nullptr,
-                const bool                     limited = false)
+                const Interpolation<dim>      &how)
     {
       std::vector<FieldValues<dim>> values(points.size());
       std::vector<unsigned int>     remote;
@@ -123,8 +165,7 @@ namespace vefs
             values_in_cell(cell,
                            BoxMeshLocator<dim>::unit_point(cell, points[i]),
                            fields,
-                           hermite,
-                           limited);
+                           how);
         }
 
       const auto &triangulation = fields.dof_handler.get_triangulation();
@@ -135,8 +176,7 @@ namespace vefs
       std::vector<Point<dim>> remote_points;
       for (const unsigned int i : remote)
         remote_points.push_back(points[i]);
-      const auto remote_values =
-        evaluate_remotely(remote_points, fields, hermite, limited);
+      const auto remote_values = evaluate_remotely(remote_points, fields, how);
       for (unsigned int k = 0; k < remote.size(); ++k)
         values[remote[k]] = remote_values[k];
       return values;
@@ -152,11 +192,24 @@ namespace vefs
   {
     const auto &nodes = fields.nodes();
 
+    const bool gradient_augmented =
+      interpolation == LevelSetInterpolation::gradient_augmented;
+
     std::vector<Point<dim>> points(nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
       points[i] = locator.fold_into_cavity(
         nodes[i].point - 0.5 * tau * fields.velocity(nodes[i]));
-    const auto at_midpoints = evaluate_at(points, fields, locator);
+    Interpolation<dim> at_midpoint;
+    // The Q1 velocity gradient in a cell is only first order; the recovered
+    // one keeps the advected level set gradient second order.
+    std::array<typename TransportedFields<dim>::VectorType, dim>
+      velocity_gradient;
+    if (gradient_augmented)
+      {
+        velocity_gradient             = recover_nodal_gradients(fields, dim);
+        at_midpoint.velocity_gradient = &velocity_gradient;
+      }
+    const auto at_midpoints = evaluate_at(points, fields, locator, at_midpoint);
 
     std::vector<double> beyond_contact(nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -168,16 +221,17 @@ namespace vefs
         beyond_contact[i]     = locator.distance_beyond_contact_walls(foot);
         points[i]             = locator.fold_into_cavity(foot);
       }
+
     LevelSetHermite<dim> hermite;
-    const bool           cubic = interpolation != LevelSetInterpolation::linear;
-    if (cubic)
-      hermite.recover(fields);
-    auto at_feet =
-      evaluate_at(points,
-                  fields,
-                  locator,
-                  cubic ? &hermite : nullptr,
-                  interpolation == LevelSetInterpolation::limited_cubic);
+    Interpolation<dim>   at_foot;
+    if (interpolation != LevelSetInterpolation::linear)
+      {
+        hermite.recover(fields, gradient_augmented);
+        at_foot.hermite = &hermite;
+        at_foot.limited = interpolation == LevelSetInterpolation::limited_cubic;
+        at_foot.level_set_gradient = gradient_augmented;
+      }
+    auto at_feet = evaluate_at(points, fields, locator, at_foot);
     // Liquid that leaves a contact wall leaves empty space behind: a foot
     // beyond the wall is that far outside the liquid.
     for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -189,6 +243,27 @@ namespace vefs
     for (unsigned int i = 0; i < nodes.size(); ++i)
       for (unsigned int c = 0; c < fields.n_components; ++c)
         fields.fields(nodes[i].dofs[c]) = at_feet[i][c];
+
+    if (gradient_augmented)
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        {
+          // grad psi_new(x) = J^T grad psi_old(X(x)), J = dX/dx for the
+          // two-stage foot X = x - tau u(x - tau/2 u(x)): with G = grad u at
+          // the midpoint, J = I - tau G (I - tau/2 G) to the order of the
+          // trace.
+          Tensor<2, dim> G;
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              G[a][b] = at_midpoints[i][first_extra<dim> + dim * a + b];
+          const Tensor<2, dim> J =
+            unit_symmetric_tensor<dim>() - tau * G + 0.5 * tau * tau * G * G;
+          Tensor<1, dim> old_gradient;
+          for (unsigned int d = 0; d < dim; ++d)
+            old_gradient[d] = at_feet[i][first_extra<dim> + d];
+          const Tensor<1, dim> new_gradient = old_gradient * J;
+          for (unsigned int d = 0; d < dim; ++d)
+            fields.level_set_gradient(nodes[i].dofs[d]) = new_gradient[d];
+        }
     fields.finalize();
   }
 

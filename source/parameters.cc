@@ -351,15 +351,19 @@ namespace vefs
                         "distance again away from the surface (the surface "
                         "itself does not move); 0: never.");
       prm.declare_entry("Level set interpolation",
-                        "cubic",
-                        Patterns::Selection("linear|cubic|limited cubic"),
+                        "gradient augmented",
+                        Patterns::Selection(
+                          "linear|cubic|limited cubic|gradient augmented"),
                         "How the level set is interpolated at the feet of "
                         "the characteristics: linear (Q1, an O(h^2) error "
                         "per step, so the surface smears as the steps "
-                        "shrink), cubic (tensor-product cubic Hermite with "
-                        "nodal derivatives recovered from the Q1 field), or "
+                        "shrink); cubic (tensor-product cubic Hermite with "
+                        "nodal derivatives recovered from the Q1 field); "
                         "limited cubic (cubic clipped to the range of the "
-                        "cell's nodal values). The other fields are always "
+                        "cell's nodal values); gradient augmented (cubic "
+                        "Hermite with the gradient of the level set carried "
+                        "along the characteristics as well, Nave, Rosales & "
+                        "Seibold 2010). The other fields are always "
                         "linear.");
       prm.declare_entry("Volume correction",
                         "true",
@@ -514,9 +518,10 @@ namespace vefs
     {
       const std::string name  = prm.get("Level set interpolation");
       level_set_interpolation = name == "linear" ? LevelSetInterpolation::linear
-                                : name == "cubic"
-                                  ? LevelSetInterpolation::cubic
-                                  : LevelSetInterpolation::limited_cubic;
+                                : name == "cubic" ? LevelSetInterpolation::cubic
+                                : name == "limited cubic"
+                                  ? LevelSetInterpolation::limited_cubic
+                                  : LevelSetInterpolation::gradient_augmented;
     }
     prm.leave_subsection();
 

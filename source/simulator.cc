@@ -293,7 +293,7 @@ namespace vefs
                                        parameters.level_set_interpolation);
           if (parameters.redistancing_interval > 0 &&
               statistics.step % parameters.redistancing_interval == 0)
-            redistance(fields);
+            redistance(fields, parameters.level_set_interpolation);
           if (parameters.volume_correction)
             correct_volume(fields, expected_volume);
         }

@@ -56,7 +56,8 @@ namespace vefs
   {
     linear,
     cubic,
-    limited_cubic
+    limited_cubic,
+    gradient_augmented
   };
 
   /** Names of the cavity walls, in boundary-id order. */
