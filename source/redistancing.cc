@@ -32,6 +32,16 @@ namespace vefs
       const Point<dim> upper =
         cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
 
+      // A sub-lattice edge on a lower face with a neighbor behind it is left
+      // to that neighbor, so that every crossing is found once, whatever the
+      // partition (the cubic gradient differs between the two sides).
+      const auto owns_edge = [&](const Point<dim> &xi, const unsigned int d) {
+        for (unsigned int e = 0; e < dim; ++e)
+          if (e != d && xi[e] < 1e-12 && !cell->at_boundary(2 * e))
+            return false;
+        return true;
+      };
+
       const unsigned int n        = n_sub_cells + 1;
       unsigned int       n_points = 1;
       for (unsigned int d = 0; d < dim; ++d)
@@ -44,7 +54,7 @@ namespace vefs
             xi[d] = double(rest % n) / n_sub_cells;
           const double a = interpolate(xi);
           for (unsigned int d = 0; d < dim; ++d)
-            if (xi[d] < 1 - 1e-12)
+            if (xi[d] < 1 - 1e-12 && owns_edge(xi, d))
               {
                 Point<dim> next = xi;
                 next[d] += 1. / n_sub_cells;
