@@ -89,11 +89,12 @@ namespace vefs
 
     std::vector<Point<dim>>     crossings;
     std::vector<Tensor<1, dim>> normals;
-    std::vector<bool>           keep(fields.owned_dofs.n_elements(), false);
-    // Ghost cells too: an owned node may belong to a cut cell of another
-    // rank only.
+    // 1 at the vertices of cut cells, gathered from the ranks that own the
+    // cells: an owned node may belong to a cut cell of another rank only.
+    typename TransportedFields<dim>::VectorType cut_vertex;
+    fields.initialize_vector(cut_vertex);
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
-      if (!cell->is_artificial())
+      if (cell->is_locally_owned())
         {
           std::array<double, GeometryInfo<dim>::vertices_per_cell> values;
           bool has_liquid = false, has_gas = false;
@@ -147,12 +148,40 @@ namespace vefs
             }
           if (cut)
             for (const unsigned int v : cell->vertex_indices())
-              {
-                const auto dof = cell->vertex_dof_index(v, c);
-                if (fields.owned_dofs.is_element(dof))
-                  keep[fields.owned_dofs.index_within_set(dof)] = true;
-              }
+              cut_vertex(cell->vertex_dof_index(v, c)) = 1;
         }
+    cut_vertex.compress(VectorOperation::max);
+    cut_vertex.update_ghost_values();
+
+    // The nodes that keep their values: those of the cut cells; with the
+    // cubic level set also those of the cells around them, whose gradients
+    // make the mixed derivatives at the cut cells' vertices, so that the
+    // cubic surface does not move either (measured on the vortex, h = 1/128,
+    // CFL 5, raw volume change: +3.3 % without this layer, -1.2 % with one,
+    // -1.8 % with two).
+    for (unsigned int layer = 0; layer < (cubic ? 1 : 0); ++layer)
+      {
+        typename TransportedFields<dim>::VectorType grown = cut_vertex;
+        grown.zero_out_ghost_values();
+        for (const auto &cell : fields.dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              bool touches = false;
+              for (const unsigned int v : cell->vertex_indices())
+                touches =
+                  touches || cut_vertex(cell->vertex_dof_index(v, c)) > 0;
+              if (touches)
+                for (const unsigned int v : cell->vertex_indices())
+                  grown(cell->vertex_dof_index(v, c)) = 1;
+            }
+        grown.compress(VectorOperation::max);
+        grown.update_ghost_values();
+        cut_vertex = grown;
+      }
+    std::vector<bool> keep(fields.owned_dofs.n_elements(), false);
+    for (const auto &node : fields.nodes())
+      keep[fields.owned_dofs.index_within_set(node.dofs[c])] =
+        cut_vertex(node.dofs[c]) > 0;
 
     const MPI_Comm comm =
       fields.dof_handler.get_triangulation().get_communicator();
