@@ -66,6 +66,7 @@ import json
 import math
 import os
 import platform
+import re
 import shlex
 import shutil
 import subprocess
@@ -107,11 +108,14 @@ CASES = {
 }
 
 
+NOCORR_CFLS = (1, 5, 10)  # --nocorr-cfls
+
+
 def run_list(case):
     """(L, CFL, correction) of the fixed runs of a case, in run order."""
     if case in ("zalesak", "vortex"):
         return [(L, c, corr) for L in (6, 7, 8) for c in (1, 5, 10)
-                for corr in (True, False)]
+                for corr in (True, False) if corr or c in NOCORR_CFLS]
     runs = [(L, c, True) for L in (5, 6) for c in (1, 5, 10)]
     runs += [(L, 5, False) for L in (5, 6)]
     return runs
@@ -437,6 +441,11 @@ def parse_args(argv=None):
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--cases", nargs="+", choices=sorted(CASES),
                    default=["zalesak", "vortex", "deformation"])
+    p.add_argument("--nocorr-cfls", nargs="*", type=float, default=[1, 5, 10],
+                   help="2D: the CFL numbers also run without the volume "
+                   "correction")
+    p.add_argument("--skip", default=None, metavar="REGEX",
+                   help="leave out the runs whose name matches")
     p.add_argument("--set", action="append", default=[],
                    metavar="SECTION/ENTRY=VALUE",
                    help="one more prm entry for every run, e.g. 'Mesh "
@@ -539,6 +548,8 @@ def do_run(case, L, cfl, corr, args, vefs, results, base, provenance):
 
 def main(argv=None):
     args = parse_args(argv)
+    global NOCORR_CFLS
+    NOCORR_CFLS = tuple(args.nocorr_cfls)
     for item in args.set:
         key, value = item.split("=", 1)
         parts = key.split("/")
@@ -584,6 +595,8 @@ def main(argv=None):
             base = f.read()
         rows = []
         for L, cfl, corr in run_list(case):
+            if args.skip and re.search(args.skip, run_name(case, L, cfl, corr)):
+                continue
             r = do_run(case, L, cfl, corr, args, vefs, results, base,
                        provenance)
             if r is not None:
