@@ -4,7 +4,8 @@ LeVeque's 3D deformation of a sphere.
 
 Usage (from anywhere; the plots need matplotlib, i.e. Debian's python3):
   /usr/bin/python3 benchmarks/transport_benchmarks.py
-      [--cases zalesak deformation] [--vefs build/vefs]
+      [--cases zalesak vortex deformation] [--vefs build/vefs]
+      [--nocorr-cfls 1 5 10] [--skip REGEX] [--set SECTION/ENTRY=VALUE]
       [--results-dir benchmarks/results] [--doc doc/transport.md]
       [--reuse] [--no-run] [--dry-run] [--timeout 1800]
       [--l7-limit 60] [--l7-budget 600] [--no-snapshot] [--revision TEXT]
@@ -31,6 +32,8 @@ step (number of steps) and cells; row 0 gives the exact area/volume (the
 shape_error / volume(t=0).
 
 Runs:
+  vortex:      prm/rider_kothe_vortex.prm (Rider-Kothe single vortex, T = 8),
+               the same runs as zalesak.
   zalesak:     prm/zalesak_disk.prm, L = 6 7 8, CFL = 1 5 10, correction
                on and off (18 runs).
   deformation: prm/deformation_3d.prm, L = 5 6 at CFL = 1 5 10 with
