@@ -4,7 +4,8 @@ LeVeque's 3D deformation of a sphere.
 
 Usage (from anywhere; the plots need matplotlib, i.e. Debian's python3):
   /usr/bin/python3 benchmarks/transport_benchmarks.py
-      [--cases zalesak deformation] [--vefs build/vefs]
+      [--cases zalesak vortex deformation] [--vefs build/vefs]
+      [--nocorr-cfls 1 5 10] [--skip REGEX] [--set SECTION/ENTRY=VALUE]
       [--results-dir benchmarks/results] [--doc doc/transport.md]
       [--reuse] [--no-run] [--dry-run] [--timeout 1800]
       [--l7-limit 60] [--l7-budget 600] [--no-snapshot] [--revision TEXT]
@@ -31,6 +32,8 @@ step (number of steps) and cells; row 0 gives the exact area/volume (the
 shape_error / volume(t=0).
 
 Runs:
+  vortex:      prm/rider_kothe_vortex.prm (Rider-Kothe single vortex, T = 8),
+               the same runs as zalesak.
   zalesak:     prm/zalesak_disk.prm, L = 6 7 8, CFL = 1 5 10, correction
                on and off (18 runs).
   deformation: prm/deformation_3d.prm, L = 5 6 at CFL = 1 5 10 with
@@ -66,6 +69,7 @@ import json
 import math
 import os
 import platform
+import re
 import shlex
 import shutil
 import subprocess
@@ -90,6 +94,13 @@ CASES = {
         "dim": 2,
         "plot": "transport_zalesak_convergence.png",
     },
+    "vortex": {
+        "title": "Rider-Kothe single vortex (2D, T = 8)",
+        "prm": "prm/rider_kothe_vortex.prm",
+        "prefix": "rider_kothe_vortex",
+        "dim": 2,
+        "plot": "transport_vortex_convergence.png",
+    },
     "deformation": {
         "title": "3D deformation of a sphere (LeVeque, T = 3)",
         "prm": "prm/deformation_3d.prm",
@@ -100,11 +111,14 @@ CASES = {
 }
 
 
+NOCORR_CFLS = (1, 5, 10)  # --nocorr-cfls
+
+
 def run_list(case):
     """(L, CFL, correction) of the fixed runs of a case, in run order."""
-    if case == "zalesak":
+    if case in ("zalesak", "vortex"):
         return [(L, c, corr) for L in (6, 7, 8) for c in (1, 5, 10)
-                for corr in (True, False)]
+                for corr in (True, False) if corr or c in NOCORR_CFLS]
     runs = [(L, c, True) for L in (5, 6) for c in (1, 5, 10)]
     runs += [(L, 5, False) for L in (5, 6)]
     return runs
@@ -115,7 +129,12 @@ def run_name(case, L, cfl, corr):
                                 "corr" if corr else "nocorr")
 
 
+EXTRA_ENTRIES = []  # (section path, entry, value) from --set
+
+
 def make_prm(text, L, cfl, corr, output_dir):
+    for path, entry, value in EXTRA_ENTRIES:
+        text = set_entry(text, path, entry, value)
     text = set_entry(text, ["Mesh refinement"], "Maximum level", str(L))
     text = set_entry(text, ["Mesh refinement"], "Bulk level", str(L - 2))
     text = set_entry(text, ["Mesh refinement"], "Minimum level", str(L - 4))
@@ -424,7 +443,16 @@ def plot_case(rows, title, path):
 def parse_args(argv=None):
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--cases", nargs="+", choices=sorted(CASES),
-                   default=["zalesak", "deformation"])
+                   default=["zalesak", "vortex", "deformation"])
+    p.add_argument("--nocorr-cfls", nargs="*", type=float, default=[1, 5, 10],
+                   help="2D: the CFL numbers also run without the volume "
+                   "correction")
+    p.add_argument("--skip", default=None, metavar="REGEX",
+                   help="leave out the runs whose name matches")
+    p.add_argument("--set", action="append", default=[],
+                   metavar="SECTION/ENTRY=VALUE",
+                   help="one more prm entry for every run, e.g. 'Mesh "
+                   "refinement/Level set interpolation=linear' (repeatable)")
     p.add_argument("--vefs", default="build/vefs")
     p.add_argument("--results-dir", default="benchmarks/results")
     p.add_argument("--doc", default="doc/transport.md")
@@ -523,6 +551,12 @@ def do_run(case, L, cfl, corr, args, vefs, results, base, provenance):
 
 def main(argv=None):
     args = parse_args(argv)
+    global NOCORR_CFLS
+    NOCORR_CFLS = tuple(args.nocorr_cfls)
+    for item in args.set:
+        key, value = item.split("=", 1)
+        parts = key.split("/")
+        EXTRA_ENTRIES.append((parts[:-1], parts[-1], value))
     vefs = resolve(args.vefs)
     results = abs_in_repo(args.results_dir)
     doc = abs_in_repo(args.doc)
@@ -564,6 +598,8 @@ def main(argv=None):
             base = f.read()
         rows = []
         for L, cfl, corr in run_list(case):
+            if args.skip and re.search(args.skip, run_name(case, L, cfl, corr)):
+                continue
             r = do_run(case, L, cfl, corr, args, vefs, results, base,
                        provenance)
             if r is not None:

@@ -1,52 +1,156 @@
 #include <deal.II/base/mpi_remote_point_evaluation.h>
-#include <deal.II/numerics/vector_tools_evaluate.h>
 
 #include <vefs/characteristics.h>
+#include <vefs/level_set_hermite.h>
+#include <vefs/nodal_gradients.h>
 
 namespace vefs
 {
   namespace
   {
-    /** Values of all components of the fields at one point. */
+    /**
+     * Values of all components of the fields at one point, followed by
+     * extras (from index first_extra): the velocity gradient du_i/dx_j at
+     * first_extra + dim i + j, or the level set gradient.
+     */
     template <int dim>
     using FieldValues =
-      Tensor<1, TransportedFields<dim>::max_components, double>;
+      Tensor<1, TransportedFields<dim>::max_components + dim * dim, double>;
 
-    /** The fields at @p points through RemotePointEvaluation. */
-    template <int dim, int n_components>
+    template <int dim>
+    constexpr unsigned int first_extra = TransportedFields<dim>::max_components;
+
+    /** How values_in_cell interpolates, and which extras it adds. */
+    template <int dim>
+    struct Interpolation
+    {
+      /** The level set by this Hermite interpolation, if not null. */
+      const LevelSetHermite<dim> *hermite = nullptr;
+      bool                        limited = false;
+      /** Extras: the gradient of the (Hermite) level set. */
+      bool level_set_gradient = false;
+      /**
+       * Extras: the velocity gradient, Q1 from these nodal gradients (see
+       * recover_nodal_gradients()), if not null.
+       */
+      const std::array<typename TransportedFields<dim>::VectorType, dim>
+        *velocity_gradient = nullptr;
+    };
+
+    /**
+     * The fields at the unit-cell point @p xi of @p cell (locally owned or
+     * ghost): Q1 unless @p how says otherwise.
+     */
+    template <int dim>
+    FieldValues<dim>
+    values_in_cell(
+      const typename Triangulation<dim>::active_cell_iterator &cell,
+      const Point<dim>                                        &xi,
+      const TransportedFields<dim>                            &fields,
+      const Interpolation<dim>                                &how)
+    {
+      constexpr unsigned int level_set =
+        TransportedFields<dim>::level_set_component;
+      FieldValues<dim> values;
+      const auto       dof_cell = fields.cell_of(cell);
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
+          for (unsigned int c = 0; c < fields.n_components; ++c)
+            values[c] +=
+              weight * fields.fields(dof_cell->vertex_dof_index(v, c));
+        }
+      if (how.velocity_gradient)
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                values[first_extra<dim> + dim * i + j] +=
+                  weight *
+                  (*how.velocity_gradient)[j](dof_cell->vertex_dof_index(v, i));
+          }
+      if (how.hermite)
+        {
+          Tensor<1, dim> gradient;
+          values[level_set] =
+            how.hermite->value(fields,
+                               dof_cell,
+                               xi,
+                               how.limited,
+                               how.level_set_gradient ? &gradient : nullptr);
+          if (how.level_set_gradient)
+            for (unsigned int d = 0; d < dim; ++d)
+              values[first_extra<dim> + d] = gradient[d];
+        }
+      return values;
+    }
+
+    /**
+     * The fields at @p points, which may lie anywhere in the mesh, through
+     * RemotePointEvaluation: the ranks that own the cells evaluate them.
+     */
+    template <int dim>
     std::vector<FieldValues<dim>>
     evaluate_remotely(const std::vector<Point<dim>> &points,
-                      const TransportedFields<dim>  &fields)
+                      const TransportedFields<dim>  &fields,
+                      const Interpolation<dim>      &how)
     {
       Utilities::MPI::RemotePointEvaluation<dim> evaluation;
-      evaluation.reinit(points,
-                        fields.dof_handler.get_triangulation(),
-                        fields.mapping);
+      const auto &triangulation = fields.dof_handler.get_triangulation();
+      evaluation.reinit(points, triangulation, fields.mapping);
       AssertThrow(evaluation.all_points_found(),
                   ExcMessage("A characteristic foot lies outside the mesh."));
-      const auto values =
-        VectorTools::point_values<n_components>(evaluation,
-                                                fields.dof_handler,
-                                                fields.fields);
+
+      using CellData =
+        typename Utilities::MPI::RemotePointEvaluation<dim>::CellData;
+      std::vector<FieldValues<dim>> evaluated, buffer;
+      evaluation.template evaluate_and_process<FieldValues<dim>>(
+        evaluated,
+        buffer,
+        [&](const ArrayView<FieldValues<dim>> &values,
+            const CellData                    &cell_data) {
+          for (unsigned int i = 0; i < cell_data.cells.size(); ++i)
+            {
+              const typename Triangulation<dim>::active_cell_iterator cell(
+                &triangulation,
+                cell_data.cells[i].first,
+                cell_data.cells[i].second);
+              for (unsigned int q = cell_data.reference_point_ptrs[i];
+                   q < cell_data.reference_point_ptrs[i + 1];
+                   ++q)
+                values[q] = values_in_cell(cell,
+                                           cell_data.reference_point_values[q],
+                                           fields,
+                                           how);
+            }
+        });
+
+      // A point on a cell boundary is found in every cell around it: take
+      // the mean of the (equal up to round-off) values.
+      const auto                   &ptrs = evaluation.get_point_ptrs();
       std::vector<FieldValues<dim>> result(points.size());
       for (unsigned int k = 0; k < points.size(); ++k)
-        for (unsigned int c = 0; c < n_components; ++c)
-          result[k][c] = values[k][c];
+        {
+          for (unsigned int j = ptrs[k]; j < ptrs[k + 1]; ++j)
+            result[k] += evaluated[j];
+          result[k] /= std::max(1u, ptrs[k + 1] - ptrs[k]);
+        }
       return result;
     }
 
     /**
      * The fields at arbitrary points: in the local part of the mesh (owned
-     * and ghost cells) by Q1 interpolation in the cell the locator finds,
-     * elsewhere through RemotePointEvaluation on the ranks that own them.
+     * and ghost cells) in the cell the locator finds, elsewhere through
+     * RemotePointEvaluation on the ranks that own them.
      */
     template <int dim>
     std::vector<FieldValues<dim>>
     evaluate_at(const std::vector<Point<dim>> &points,
                 const TransportedFields<dim>  &fields,
-                const BoxMeshLocator<dim>     &locator)
+                const BoxMeshLocator<dim>     &locator,
+                const Interpolation<dim>      &how)
     {
-      const unsigned int            n_components = fields.n_components;
       std::vector<FieldValues<dim>> values(points.size());
       std::vector<unsigned int>     remote;
       for (unsigned int i = 0; i < points.size(); ++i)
@@ -57,16 +161,11 @@ namespace vefs
               remote.push_back(i);
               continue;
             }
-          const Point<dim> xi =
-            BoxMeshLocator<dim>::unit_point(cell, points[i]);
-          const auto dof_cell = fields.cell_of(cell);
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
-              for (unsigned int c = 0; c < n_components; ++c)
-                values[i][c] +=
-                  weight * fields.fields(dof_cell->vertex_dof_index(v, c));
-            }
+          values[i] =
+            values_in_cell(cell,
+                           BoxMeshLocator<dim>::unit_point(cell, points[i]),
+                           fields,
+                           how);
         }
 
       const auto &triangulation = fields.dof_handler.get_triangulation();
@@ -77,12 +176,7 @@ namespace vefs
       std::vector<Point<dim>> remote_points;
       for (const unsigned int i : remote)
         remote_points.push_back(points[i]);
-      const auto remote_values =
-        fields.has_stress()
-          ? evaluate_remotely<dim, TransportedFields<dim>::max_components>(
-              remote_points,
-              fields)
-          : evaluate_remotely<dim, dim + 1>(remote_points, fields);
+      const auto remote_values = evaluate_remotely(remote_points, fields, how);
       for (unsigned int k = 0; k < remote.size(); ++k)
         values[remote[k]] = remote_values[k];
       return values;
@@ -91,17 +185,31 @@ namespace vefs
 
   template <int dim>
   void
-  advect_along_characteristics(TransportedFields<dim>    &fields,
-                               const double               tau,
-                               const BoxMeshLocator<dim> &locator)
+  advect_along_characteristics(TransportedFields<dim>     &fields,
+                               const double                tau,
+                               const BoxMeshLocator<dim>  &locator,
+                               const LevelSetInterpolation interpolation)
   {
     const auto &nodes = fields.nodes();
+
+    const bool gradient_augmented =
+      interpolation == LevelSetInterpolation::gradient_augmented;
 
     std::vector<Point<dim>> points(nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
       points[i] = locator.fold_into_cavity(
         nodes[i].point - 0.5 * tau * fields.velocity(nodes[i]));
-    const auto at_midpoints = evaluate_at(points, fields, locator);
+    Interpolation<dim> at_midpoint;
+    // The Q1 velocity gradient in a cell is only first order; the recovered
+    // one keeps the advected level set gradient second order.
+    std::array<typename TransportedFields<dim>::VectorType, dim>
+      velocity_gradient;
+    if (gradient_augmented)
+      {
+        velocity_gradient             = recover_nodal_gradients(fields, dim);
+        at_midpoint.velocity_gradient = &velocity_gradient;
+      }
+    const auto at_midpoints = evaluate_at(points, fields, locator, at_midpoint);
 
     std::vector<double> beyond_contact(nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -113,7 +221,17 @@ namespace vefs
         beyond_contact[i]     = locator.distance_beyond_contact_walls(foot);
         points[i]             = locator.fold_into_cavity(foot);
       }
-    auto at_feet = evaluate_at(points, fields, locator);
+
+    LevelSetHermite<dim> hermite;
+    Interpolation<dim>   at_foot;
+    if (interpolation != LevelSetInterpolation::linear)
+      {
+        hermite.recover(fields, gradient_augmented);
+        at_foot.hermite = &hermite;
+        at_foot.limited = interpolation == LevelSetInterpolation::limited_cubic;
+        at_foot.level_set_gradient = gradient_augmented;
+      }
+    auto at_feet = evaluate_at(points, fields, locator, at_foot);
     // Liquid that leaves a contact wall leaves empty space behind: a foot
     // beyond the wall is that far outside the liquid.
     for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -125,15 +243,38 @@ namespace vefs
     for (unsigned int i = 0; i < nodes.size(); ++i)
       for (unsigned int c = 0; c < fields.n_components; ++c)
         fields.fields(nodes[i].dofs[c]) = at_feet[i][c];
+
+    if (gradient_augmented)
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        {
+          // grad psi_new(x) = J^T grad psi_old(X(x)), J = dX/dx for the
+          // two-stage foot X = x - tau u(x - tau/2 u(x)): with G = grad u at
+          // the midpoint, J = I - tau G (I - tau/2 G) to the order of the
+          // trace.
+          Tensor<2, dim> G;
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              G[a][b] = at_midpoints[i][first_extra<dim> + dim * a + b];
+          const Tensor<2, dim> J =
+            unit_symmetric_tensor<dim>() - tau * G + 0.5 * tau * tau * G * G;
+          Tensor<1, dim> old_gradient;
+          for (unsigned int d = 0; d < dim; ++d)
+            old_gradient[d] = at_feet[i][first_extra<dim> + d];
+          const Tensor<1, dim> new_gradient = old_gradient * J;
+          for (unsigned int d = 0; d < dim; ++d)
+            fields.level_set_gradient(nodes[i].dofs[d]) = new_gradient[d];
+        }
     fields.finalize();
   }
 
   template void
   advect_along_characteristics<2>(TransportedFields<2> &,
                                   const double,
-                                  const BoxMeshLocator<2> &);
+                                  const BoxMeshLocator<2> &,
+                                  const LevelSetInterpolation);
   template void
   advect_along_characteristics<3>(TransportedFields<3> &,
                                   const double,
-                                  const BoxMeshLocator<3> &);
+                                  const BoxMeshLocator<3> &,
+                                  const LevelSetInterpolation);
 } // namespace vefs

@@ -93,15 +93,23 @@ namespace vefs
         parallel::distributed::
           SolutionTransfer<dim, typename TransportedFields<dim>::VectorType>
             transfer(fields.dof_handler);
-        transfer.prepare_for_coarsening_and_refinement(fields.fields);
+        const std::vector<const typename TransportedFields<dim>::VectorType *>
+          old_vectors = {&fields.fields, &fields.level_set_gradient};
+        transfer.prepare_for_coarsening_and_refinement(old_vectors);
         triangulation.execute_coarsening_and_refinement();
 
         fields.setup_dofs();
-        typename TransportedFields<dim>::VectorType transferred;
-        fields.initialize_vector(transferred);
-        transferred.zero_out_ghost_values();
-        transfer.interpolate(transferred);
-        fields.fields = transferred;
+        std::vector<typename TransportedFields<dim>::VectorType> transferred(2);
+        for (auto &vector : transferred)
+          {
+            fields.initialize_vector(vector);
+            vector.zero_out_ghost_values();
+          }
+        std::vector<typename TransportedFields<dim>::VectorType *> new_vectors =
+          {&transferred[0], &transferred[1]};
+        transfer.interpolate(new_vectors);
+        fields.fields             = transferred[0];
+        fields.level_set_gradient = transferred[1];
         fields.finalize();
         changed = true;
       }

@@ -399,10 +399,13 @@ namespace vefs
               prescribed_velocity->set_time(statistics.time + tau / 2);
               fields.set_velocity(*prescribed_velocity);
             }
-          advect_along_characteristics(fields, tau, *locator);
+          advect_along_characteristics(fields,
+                                       tau,
+                                       *locator,
+                                       parameters.level_set_interpolation);
           if (parameters.redistancing_interval > 0 &&
               statistics.step % parameters.redistancing_interval == 0)
-            redistance(fields);
+            redistance(fields, parameters.level_set_interpolation);
           if (parameters.volume_correction)
             correct_volume(fields, expected_volume);
         }

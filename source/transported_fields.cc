@@ -37,6 +37,7 @@ namespace vefs
     constraints.close();
 
     initialize_vector(fields);
+    initialize_vector(level_set_gradient);
 
     // FE_Q(1)^n_components: the i-th degree of freedom of a vertex belongs to
     // component i, so one vertex carries all fields of one node.
@@ -82,6 +83,16 @@ namespace vefs
         for (unsigned int d = 0; d < dim; ++d)
           fields(node.dofs[d]) = velocity.value(node.point, d);
         fields(node.dofs[level_set_component]) = level_set.value(node.point);
+        // Central differences: the expression has no analytic gradient.
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double step = 1e-6;
+            Point<dim>   plus = node.point, minus = node.point;
+            plus[d] += step;
+            minus[d] -= step;
+            level_set_gradient(node.dofs[d]) =
+              (level_set.value(plus) - level_set.value(minus)) / (2 * step);
+          }
         if (has_stress())
           for (unsigned int i = 0; i < n_stress_components; ++i)
             fields(node.dofs[first_stress_component + i]) =
@@ -104,9 +115,12 @@ namespace vefs
   void
   TransportedFields<dim>::finalize()
   {
-    fields.update_ghost_values();
-    constraints.distribute(fields);
-    fields.update_ghost_values();
+    for (VectorType *vector : {&fields, &level_set_gradient})
+      {
+        vector->update_ghost_values();
+        constraints.distribute(*vector);
+        vector->update_ghost_values();
+      }
   }
 
   template class TransportedFields<2>;

@@ -1,7 +1,8 @@
 """Zalesak's slotted disk after one revolution at CFL 5, finest cells 1/128.
 Exact final shape: the initial disk. Bounds: relative L1 error 0.12 (the
 slot, 6 cells wide, has its corners rounded; 0.084 measured when the test was
-written), interface thickness 2 finest cells (issue 3)."""
+written with the linear interpolation at the feet, 0.045 with the
+gradient-augmented level set of issue 11), interface thickness 2 finest cells (issue 3)."""
 import os
 import sys
 

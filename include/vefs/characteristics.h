@@ -16,12 +16,15 @@ namespace vefs
    * cells away: in the local part of the mesh the locator finds their cell,
    * on other MPI ranks RemotePointEvaluation does. Feet outside the cavity
    * are moved back onto its walls, or wrapped around periodic walls.
+   * The level set is interpolated at the feet as @p interpolation says
+   * (LevelSetHermite for the cubic ones), the other fields linearly (Q1).
    */
   template <int dim>
   void
-  advect_along_characteristics(TransportedFields<dim>    &fields,
-                               const double               tau,
-                               const BoxMeshLocator<dim> &locator);
+  advect_along_characteristics(TransportedFields<dim>     &fields,
+                               const double                tau,
+                               const BoxMeshLocator<dim>  &locator,
+                               const LevelSetInterpolation interpolation);
 } // namespace vefs
 
 #endif

@@ -51,6 +51,15 @@ namespace vefs
     elastic_solid
   };
 
+  /** How the level set is interpolated at the feet of the characteristics. */
+  enum class LevelSetInterpolation
+  {
+    linear,
+    cubic,
+    limited_cubic,
+    gradient_augmented
+  };
+
   /** Names of the cavity walls, in boundary-id order. */
   const std::array<std::string, 6> wall_names = {
     {"x-", "x+", "y-", "y+", "z-", "z+"}};
@@ -118,13 +127,14 @@ namespace vefs
     /** Empty: zero initial stress. */
     std::string initial_stress;
 
-    unsigned int min_level;
-    unsigned int bulk_level;
-    unsigned int max_level;
-    double       band_width;
-    unsigned int extension_layers;
-    bool         volume_correction;
-    unsigned int redistancing_interval;
+    unsigned int          min_level;
+    unsigned int          bulk_level;
+    unsigned int          max_level;
+    double                band_width;
+    unsigned int          extension_layers;
+    bool                  volume_correction;
+    unsigned int          redistancing_interval;
+    LevelSetInterpolation level_set_interpolation;
 
     double       solver_tolerance;
     unsigned int solver_max_iterations;

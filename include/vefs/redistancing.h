@@ -1,6 +1,7 @@
 #ifndef vefs_redistancing_h
 #define vefs_redistancing_h
 
+#include <vefs/parameters.h>
 #include <vefs/transported_fields.h>
 
 namespace vefs
@@ -12,11 +13,16 @@ namespace vefs
    * The nodes of cells cut by the surface keep their values, so the zero
    * level set (and the volume) does not move; every other node gets the
    * distance to the surface's crossings of cell edges, gathered from all
-   * ranks, with the sign it had.
+   * ranks, with the sign it had. The crossings are those of the level set as
+   * the transport interpolates it (@p interpolation: Q1, or cubic Hermite,
+   * whose zero set differs from the Q1 one by O(h^2)); the level set
+   * gradient of those nodes becomes the unit vector away from the nearest
+   * crossing.
    */
   template <int dim>
   void
-  redistance(TransportedFields<dim> &fields);
+  redistance(TransportedFields<dim>     &fields,
+             const LevelSetInterpolation interpolation);
 } // namespace vefs
 
 #endif

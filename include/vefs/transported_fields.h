@@ -86,7 +86,10 @@ namespace vefs
     void
     set_velocity(const Function<dim> &velocity);
 
-    /** Make hanging nodes and ghost entries consistent after a change. */
+    /**
+     * Make hanging nodes and ghost entries consistent after a change (of
+     * the fields and of the level set gradient).
+     */
     void
     finalize();
 
@@ -120,6 +123,13 @@ namespace vefs
     IndexSet                  owned_dofs;
     IndexSet                  relevant_dofs;
     VectorType                fields;
+    /**
+     * The gradient of the level set, carried along the characteristics with
+     * it by the gradient-augmented transport (LevelSetHermite): same layout
+     * as @p fields, the derivative in direction d in the slot of velocity
+     * component d (the other slots are unused).
+     */
+    VectorType level_set_gradient;
 
   private:
     const std::vector<unsigned int> periodic_directions;
