@@ -2,6 +2,8 @@
 
 #include <vefs/ghost_penalty.h>
 
+#include <algorithm>
+
 namespace vefs
 {
   template <int dim>
@@ -44,6 +46,8 @@ namespace vefs
           neighbor_dofs.resize(neighbor->get_fe().n_dofs_per_cell());
           neighbor->get_dof_indices(neighbor_dofs);
           dofs.insert(dofs.end(), neighbor_dofs.begin(), neighbor_dofs.end());
+          std::sort(dofs.begin(), dofs.end());
+          dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
           action(matrix, schur, dofs);
           return;
         }

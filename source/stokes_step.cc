@@ -292,12 +292,21 @@ namespace vefs
                                     constraints,
                                     false,
                                     Utilities::MPI::this_mpi_process(comm));
+    // The velocity block comes first: the pressure unknowns are the rest.
+    const types::global_dof_index        n_u = owned_partitioning[0].size();
+    std::vector<types::global_dof_index> pressure_dofs;
     ghost_penalty.for_each_face(
       dof_handler,
       *domain,
       false,
       [&](const auto &, const auto &, const auto &dofs) {
-        constraints.add_entries_local_to_global(dofs, schur_pattern, false);
+        pressure_dofs.clear();
+        for (const auto dof : dofs)
+          if (dof >= n_u)
+            pressure_dofs.push_back(dof);
+        constraints.add_entries_local_to_global(pressure_dofs,
+                                                schur_pattern,
+                                                false);
       });
     schur_pattern.compress();
     schur_matrix.clear();
@@ -425,20 +434,40 @@ namespace vefs
                                     rheology,
                                     fe_collection[liquid_index],
                                     tau);
-    Vector<double>    no_rhs;
+    Vector<double>    zero_rhs;
+    // The Schur pattern holds the pressure unknowns (after the velocity
+    // block) only.
+    const types::global_dof_index        n_u = owned_partitioning[0].size();
+    std::vector<types::global_dof_index> pressure_dofs;
+    std::vector<unsigned int>            pressure_rows;
+    FullMatrix<double>                   pressure_schur;
     ghost_penalty.for_each_face(
       dof_handler,
       *domain,
       true,
       [&](const auto &matrix, const auto &schur, const auto &dofs) {
         // Through the right-hand side, so that wall velocities act.
-        no_rhs.reinit(dofs.size());
+        zero_rhs.reinit(dofs.size());
         constraints.distribute_local_to_global(matrix,
-                                               no_rhs,
+                                               zero_rhs,
                                                dofs,
                                                system_matrix,
                                                system_rhs);
-        constraints.distribute_local_to_global(schur, dofs, schur_matrix);
+        pressure_dofs.clear();
+        pressure_rows.clear();
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          if (dofs[i] >= n_u)
+            {
+              pressure_dofs.push_back(dofs[i]);
+              pressure_rows.push_back(i);
+            }
+        pressure_schur.reinit(pressure_rows.size(), pressure_rows.size());
+        pressure_schur.extract_submatrix_from(schur,
+                                              pressure_rows,
+                                              pressure_rows);
+        constraints.distribute_local_to_global(pressure_schur,
+                                               pressure_dofs,
+                                               schur_matrix);
       });
     system_matrix.compress(VectorOperation::add);
     schur_matrix.compress(VectorOperation::add);

@@ -47,8 +47,7 @@ namespace vefs
      * on the other side. A face between two cut cells is seen from both,
      * with half the weight each time (the other side may be on another
      * rank). With @p matrices_wanted false the matrices are empty and the
-     * dofs are those of both cells (shared ones twice): for the sparsity
-     * pattern.
+     * dofs are those of both cells, sorted: for the sparsity pattern.
      */
     void
     for_each_face(const DoFHandler<dim>   &dof_handler,
