@@ -112,6 +112,7 @@ namespace vefs
             if (normal_sign.count(dofs[i]) > 0)
               reaction(dofs[i]) += residual(i);
         }
+    // Only faces next to a wall can hold wall unknowns.
     ghost_penalty.for_each_face(
       dof_handler,
       domain,
@@ -123,7 +124,8 @@ namespace vefs
           if (normal_sign.count(face_dofs[i]) > 0)
             for (unsigned int j = 0; j < face_dofs.size(); ++j)
               reaction(face_dofs[i]) += matrix(i, j) * solution(face_dofs[j]);
-      });
+      },
+      GhostPenalty<dim>::Faces::next_to_walls);
     reaction.compress(VectorOperation::add);
 
     bool changed = false;

@@ -26,7 +26,8 @@ namespace vefs
   GhostPenalty<dim>::for_each_face(const DoFHandler<dim>   &dof_handler,
                                    const LiquidDomain<dim> &domain,
                                    const bool               matrices_wanted,
-                                   const FaceAction        &action)
+                                   const FaceAction        &action,
+                                   const Faces              faces)
   {
     using Location = typename LiquidDomain<dim>::Location;
     std::vector<types::global_dof_index> dofs, neighbor_dofs;
@@ -36,7 +37,9 @@ namespace vefs
                            const auto        &neighbor,
                            const unsigned int neighbor_face,
                            const unsigned int neighbor_subface) {
-      if (!domain.has_liquid(neighbor))
+      if (!domain.has_liquid(neighbor) ||
+          (faces == Faces::next_to_walls && !cell->at_boundary() &&
+           !neighbor->at_boundary()))
         return;
       if (!matrices_wanted)
         {

@@ -37,6 +37,14 @@ namespace vefs
                          const FullMatrix<double>                   &schur,
                          const std::vector<types::global_dof_index> &dofs)>;
 
+    /** Which faces for_each_face() visits. */
+    enum class Faces
+    {
+      all,
+      /** Faces with a cell at the cavity boundary on either side. */
+      next_to_walls
+    };
+
     GhostPenalty(const Parameters         &parameters,
                  const Rheology<dim>      &rheology,
                  const FiniteElement<dim> &flow_fe,
@@ -48,12 +56,14 @@ namespace vefs
      * with half the weight each time (the other side may be on another
      * rank). With @p matrices_wanted false the matrices are empty and the
      * dofs are those of both cells, sorted: for the sparsity pattern.
+     * @p faces may restrict the visit to faces next to the walls.
      */
     void
     for_each_face(const DoFHandler<dim>   &dof_handler,
                   const LiquidDomain<dim> &domain,
                   const bool               matrices_wanted,
-                  const FaceAction        &action);
+                  const FaceAction        &action,
+                  const Faces              faces = Faces::all);
 
   private:
     /** The matrices of the face of the last reinit(), times @p weight. */
