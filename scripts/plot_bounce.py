@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Plots of a bouncing scene (prm/bouncing_ball_2d_stiff.prm): centroid
 height, contact force and contact length, and the kinetic, potential and
-elastic energies with their sum, against time.
+elastic energies with their sum, against time. 2D or 3D: the height is
+centroid_z and the contact area replaces the length when the statistics
+have those columns (a 3D run).
 
 Usage: /usr/bin/python3 scripts/plot_bounce.py OUTPUT_DIR PNG
 """
@@ -19,14 +21,17 @@ import matplotlib.pyplot as plt  # noqa: E402
 def main(output_dir, png):
     s = read_statistics(output_dir)
     t = s["time"]
+    three_d = "centroid_z" in s
+    per = "" if three_d else "/m"   # 2D quantities are per metre of depth
+    contact = ("contact area (m^2)" if three_d else "contact length (m)")
     fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
-    axes[0].plot(t, s["centroid_y"])
+    axes[0].plot(t, s["centroid_z" if three_d else "centroid_y"])
     axes[0].set_ylabel("centroid height (m)")
-    axes[1].plot(t, s["contact_force"], label="contact force (N/m)")
+    axes[1].plot(t, s["contact_force"])
     ax = axes[1].twinx()
-    ax.plot(t, s["contact_length"], "C1", label="contact length (m)")
-    axes[1].set_ylabel("contact force (N/m)")
-    ax.set_ylabel("contact length (m)", color="C1")
+    ax.plot(t, s["contact_area" if three_d else "contact_length"], "C1")
+    axes[1].set_ylabel("contact force (N%s)" % per)
+    ax.set_ylabel(contact, color="C1")
     potential = [p - s["potential_energy"][-1] for p in s["potential_energy"]]
     total = [k + p + e for k, p, e in zip(s["kinetic_energy"], potential,
                                           s["elastic_energy"])]
@@ -34,7 +39,7 @@ def main(output_dir, png):
     axes[2].plot(t, potential, label="potential (from the last value)")
     axes[2].plot(t, s["elastic_energy"], label="elastic")
     axes[2].plot(t, total, "k", label="sum")
-    axes[2].set_ylabel("energy (J/m)")
+    axes[2].set_ylabel("energy (J%s)" % per)
     axes[2].legend(fontsize=7)
     for a in axes:
         a.set_xlabel("t (s)")
