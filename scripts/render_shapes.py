@@ -354,13 +354,13 @@ def wall_styles(output_dir, dim):
         prm = read_parameters(output_dir)
     except (OSError, ValueError):
         return {}
-    return {"%s%s" % (WALL_NAMES[d], s): prm.get("Walls/%s%s" % (WALL_NAMES[d], s), "")
-            for d in range(dim) for s in "-+"}
+    sides = ["%s%s" % (WALL_NAMES[d], s) for d in range(dim) for s in "-+"]
+    return {side: prm.get("Walls/" + side, "") for side in sides}
 
 
 def draw_walls(ax, box, dims, walls):
-    """The cavity's sides in the panel: solid where there is a wall, dotted
-    where it is open (or a section's cut through the domain's interior)."""
+    """The cavity's sides in the panel: solid where there is a wall (thick
+    for a contact wall), dotted where it is open."""
     (x0, x1), (y0, y1) = box
     sides = {(dims[0], "-"): ([x0, x0], [y0, y1]),
              (dims[0], "+"): ([x1, x1], [y0, y1]),
