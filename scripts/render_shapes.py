@@ -202,6 +202,14 @@ def output_interval(output_dir):
         return 1
 
 
+def output_time_interval(output_dir):
+    """Output/Time interval of the run (0 if unset or unknown)."""
+    try:
+        return float(read_parameters(output_dir).get("Output/Time interval", 0))
+    except (OSError, ValueError):
+        return 0.
+
+
 def select_outputs(output_dir, steps, every):
     """[(requested step, step of the output used, its time, .pvtu path)].
 
@@ -218,6 +226,9 @@ def select_outputs(output_dir, steps, every):
     # pvd times have 6 significant digits: same step if within a quarter
     # of the smallest time step
     tolerance = 0.25 * np.diff(values).min() if len(values) > 1 else 1e-12
+    if steps is None and every is None and output_time_interval(output_dir) > 0:
+        return [(m, m, t, path) for (t, path) in series[1:]
+                for m in [int(numbers[np.argmin(abs(values - t))])]]
     if steps is None:
         if every is None:
             interval = output_interval(output_dir)

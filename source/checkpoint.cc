@@ -239,6 +239,8 @@ namespace vefs
                << "tau " << exact(s.tau) << '\n'
                << "cfl " << exact(s.cfl) << '\n'
                << "max_velocity " << exact(s.max_velocity) << '\n'
+               << "max_velocity_gradient " << exact(s.max_velocity_gradient)
+               << '\n'
                << "linear_iterations " << s.linear_iterations << '\n'
                << "wall_time " << exact(s.wall_time) << '\n'
                << "initial_volume " << exact(state.initial_volume) << '\n'
@@ -308,19 +310,20 @@ namespace vefs
         if (to_unsigned(value("dimension")) != dim ||
             to_unsigned(value("components")) != fields.n_components)
           throw std::runtime_error("it holds other fields than this scene");
-        auto &s                = state.statistics;
-        s.step                 = to_unsigned(value("step"));
-        s.time                 = to_double(value("time"));
-        s.tau                  = to_double(value("tau"));
-        s.cfl                  = to_double(value("cfl"));
-        s.max_velocity         = to_double(value("max_velocity"));
-        s.linear_iterations    = to_unsigned(value("linear_iterations"));
-        s.wall_time            = to_double(value("wall_time"));
-        state.initial_volume   = to_double(value("initial_volume"));
-        state.expected_volume  = to_double(value("expected_volume"));
-        state.last_output_step = value("last_output_step") == "none"
-                                   ? numbers::invalid_unsigned_int
-                                   : to_unsigned(value("last_output_step"));
+        auto &s                 = state.statistics;
+        s.step                  = to_unsigned(value("step"));
+        s.time                  = to_double(value("time"));
+        s.tau                   = to_double(value("tau"));
+        s.cfl                   = to_double(value("cfl"));
+        s.max_velocity          = to_double(value("max_velocity"));
+        s.max_velocity_gradient = to_double(value("max_velocity_gradient"));
+        s.linear_iterations     = to_unsigned(value("linear_iterations"));
+        s.wall_time             = to_double(value("wall_time"));
+        state.initial_volume    = to_double(value("initial_volume"));
+        state.expected_volume   = to_double(value("expected_volume"));
+        state.last_output_step  = value("last_output_step") == "none"
+                                    ? numbers::invalid_unsigned_int
+                                    : to_unsigned(value("last_output_step"));
         for (auto [it, end] = entries.equal_range("output"); it != end; ++it)
           {
             if (it->second.size() != 2)

@@ -147,6 +147,16 @@ namespace vefs
                         "If positive, the time step is chosen so that "
                         "tau max|u| / h_min equals this number (the method "
                         "is stable for CFL numbers well above 1).");
+      prm.declare_entry(
+        "Maximum strain per step",
+        "0",
+        Patterns::Double(0),
+        "If positive (liquids with a stress, elastic solids), the time step "
+        "is also bounded so that tau max|grad u| stays below this number: "
+        "the stress update resolves the deformation of a step only while "
+        "that strain is small. An impact of a soft body raises |grad u| "
+        "by orders of magnitude; the step then shrinks for as long as the "
+        "impact lasts and grows back to 'Time step' after it.");
       prm.declare_entry("Maximum steps",
                         "100000",
                         Patterns::Integer(1),
@@ -416,6 +426,19 @@ namespace vefs
         "the finest cell (0.010 s at h = 0.8 mm); 0.5 removes that limit "
         "but damps surface waves of frequency omega by about "
         "exp(-pi omega tau / 2) per period (see doc/sharp_free_surface.md).");
+      prm.declare_entry(
+        "Stress update",
+        "linear",
+        Patterns::Selection("linear|exponential"),
+        "How the conformation tensor c (B for the elastic solid) is carried "
+        "by the new velocity gradient L after the diffusion step: linear, "
+        "c* + tau (L c* + c* L^T), the seed's first-order formula and the "
+        "one the diffusion step sees, which loses positive definiteness "
+        "once tau |L| is of order one (an impact); exponential, exp(tau L) "
+        "c* exp(tau L)^T, the exact solution for a velocity gradient "
+        "constant over the step, positive definite by construction and "
+        "equal to the linear one to first order. The relaxation (alpha > 0) "
+        "follows in both cases.");
       prm.declare_entry("Ghost penalty",
                         "0.1",
                         Patterns::Double(0),
@@ -497,6 +520,14 @@ namespace vefs
                         "Write visualization files every this many time "
                         "steps (and at the first and last step); 0 writes "
                         "none.");
+      prm.declare_entry("Time interval",
+                        "0",
+                        Patterns::Double(0),
+                        "If positive, write visualization files at the "
+                        "multiples of this time instead (the time step is "
+                        "shortened to land on them): with an adaptive time "
+                        "step, the frames of a scene then show the same "
+                        "instants whatever the resolution.");
       prm.declare_entry("Verbose",
                         "true",
                         Patterns::Bool(),
@@ -514,10 +545,11 @@ namespace vefs
     gravity          = to_doubles(prm.get("Gravity"));
 
     prm.enter_subsection("Time");
-    end_time      = prm.get_double("End time");
-    time_step     = prm.get_double("Time step");
-    target_cfl    = prm.get_double("Target CFL");
-    maximum_steps = prm.get_integer("Maximum steps");
+    end_time            = prm.get_double("End time");
+    time_step           = prm.get_double("Time step");
+    target_cfl          = prm.get_double("Target CFL");
+    max_strain_per_step = prm.get_double("Maximum strain per step");
+    maximum_steps       = prm.get_integer("Maximum steps");
     prm.leave_subsection();
 
     prm.enter_subsection("Health check");
@@ -585,6 +617,9 @@ namespace vefs
     pressure_stabilization     = prm.get_double("Pressure stabilization");
     ghost_penalty              = prm.get_double("Ghost penalty");
     free_surface_stabilization = prm.get_double("Free surface stabilization");
+    stress_update              = prm.get("Stress update") == "linear"
+                                   ? StressUpdate::linear
+                                   : StressUpdate::exponential;
     amg_smoother_sweeps        = prm.get_integer("AMG smoother sweeps");
     prm.leave_subsection();
 
@@ -604,8 +639,9 @@ namespace vefs
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
-    output_interval = prm.get_integer("Interval");
-    verbose         = prm.get_bool("Verbose");
+    output_interval      = prm.get_integer("Interval");
+    output_time_interval = prm.get_double("Time interval");
+    verbose              = prm.get_bool("Verbose");
     prm.leave_subsection();
 
     check();

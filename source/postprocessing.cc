@@ -7,9 +7,58 @@
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 
 namespace vefs
 {
+  namespace
+  {
+    /**
+     * Widen the box [lower, upper] to the liquid of @p cell: all vertices of
+     * a full cell; of a cut one, its liquid vertices and the quadrature
+     * points of its piece of surface (the box is then short of the surface's
+     * extreme by a fraction of the piece, well below a cell).
+     */
+    template <int dim, typename CellIterator>
+    void
+    widen_to_liquid(const CellIterator           &cell,
+                    const TransportedFields<dim> &fields,
+                    const LiquidDomain<dim>      &domain,
+                    Point<dim>                   &lower,
+                    Point<dim>                   &upper)
+    {
+      const auto include = [&](const Point<dim> &p) {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower[d] = std::min(lower[d], p[d]);
+            upper[d] = std::max(upper[d], p[d]);
+          }
+      };
+      const bool is_cut =
+        domain.location(cell) == LiquidDomain<dim>::Location::cut;
+      for (const unsigned int v : cell->vertex_indices())
+        if (!is_cut || fields.fields(cell->vertex_dof_index(
+                         v,
+                         TransportedFields<dim>::level_set_component)) <= 0)
+          include(cell->vertex(v));
+      if (is_cut)
+        {
+          // The cells are boxes: the reference cell maps by a diagonal
+          // scaling.
+          const Point<dim> origin   = cell->vertex(0);
+          const Point<dim> diagonal = cell->vertex(cell->n_vertices() - 1);
+          for (const Point<dim> &xi :
+               domain.cut_cell(cell).surface.get_points())
+            {
+              Point<dim> p = origin;
+              for (unsigned int d = 0; d < dim; ++d)
+                p[d] += xi[d] * (diagonal[d] - origin[d]);
+              include(p);
+            }
+        }
+    }
+  } // namespace
+
   template <int dim>
   void
   measure_step(const Parameters             &parameters,
@@ -42,10 +91,17 @@ namespace vefs
 
     double       kinetic = 0, potential = 0, liquid_volume = 0, max_speed = 0;
     unsigned int liquid_cells = 0;
+    Point<dim>   lower, upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] = std::numeric_limits<double>::max();
+        upper[d] = -std::numeric_limits<double>::max();
+      }
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
           ++liquid_cells;
+          widen_to_liquid(cell, fields, domain, lower, upper);
           const FEValues<dim> &fe_values = liquid_values.reinit(cell);
           u.resize(fe_values.n_quadrature_points);
           fe_values[velocity].get_function_values(fields.fields, u);
@@ -71,6 +127,11 @@ namespace vefs
     s.liquid_cell_volume = Utilities::MPI::sum(liquid_volume, comm);
     s.liquid_cells       = Utilities::MPI::sum(liquid_cells, comm);
     s.max_velocity       = Utilities::MPI::max(max_speed, comm);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        s.liquid_lower[d] = Utilities::MPI::min(lower[d], comm);
+        s.liquid_upper[d] = Utilities::MPI::max(upper[d], comm);
+      }
 
     const unsigned int vertical = dim - 1;
     s.floor_extent              = liquid_extent_on_wall(fields,
@@ -135,6 +196,13 @@ namespace vefs
     for (unsigned int d = 0; d < dim; ++d)
       add_column(std::string("centroid_") + "xyz"[d],
                  [d](const S &s) { return s.centroid[d]; });
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        add_column(std::string("lower_") + "xyz"[d],
+                   [d](const S &s) { return s.liquid_lower[d]; });
+        add_column(std::string("upper_") + "xyz"[d],
+                   [d](const S &s) { return s.liquid_upper[d]; });
+      }
     add_column("kinetic_energy", [](const S &s) { return s.kinetic_energy; });
     add_column("potential_energy",
                [](const S &s) { return s.potential_energy; });
@@ -246,7 +314,8 @@ namespace vefs
              << "# volume: liquid volume from phi; volume_change: (volume - "
                 "initial volume - inflow through the walls) / initial volume; "
                 "floor_extent: largest x of liquid on the floor; "
-                "wall_height: highest liquid on the x- wall.\n"
+                "wall_height: highest liquid on the x- wall; lower_x, "
+                "upper_x, ...: the box around the liquid.\n"
              << column_header() << '\n';
         header_written = true;
       }

@@ -94,6 +94,15 @@ namespace vefs
                                    [](const auto &s) {
                                      return s.non_positive_conformation_points;
                                    });
+        statistics_file.add_column("max_velocity_gradient", [](const auto &s) {
+          return s.max_velocity_gradient;
+        });
+        if (parameters.stress_update == StressUpdate::exponential &&
+            parameters.max_strain_per_step > 0)
+          statistics_file.add_column("strain_limited_points",
+                                     [](const auto &s) {
+                                       return s.strain_limited_points;
+                                     });
       }
     if (flow.has_contact_walls())
       {
@@ -272,9 +281,14 @@ namespace vefs
 
   template <int dim>
   double
-  Simulator<dim>::choose_time_step(const double max_velocity) const
+  Simulator<dim>::choose_time_step(const StepStatistics<dim> &last) const
   {
-    double tau = parameters.time_step;
+    const double max_velocity = last.max_velocity;
+    double       tau          = parameters.time_step;
+    if (parameters.max_strain_per_step > 0 && last.max_velocity_gradient > 0)
+      tau =
+        std::min(tau,
+                 parameters.max_strain_per_step / last.max_velocity_gradient);
     if (parameters.target_cfl > 0)
       {
         const double h = levels.finest_cell_size;
@@ -294,6 +308,32 @@ namespace vefs
           }
       }
     return tau;
+  }
+
+  template <int dim>
+  double
+  Simulator<dim>::next_output_time(const double time) const
+  {
+    const double interval = parameters.output_time_interval;
+    // A time that landed on a multiple up to round-off counts as on it.
+    return (std::floor(time / interval + 1e-9) + 1) * interval;
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::is_output_step(const StepStatistics<dim> &statistics) const
+  {
+    if (is_last_step(statistics) &&
+        (parameters.output_interval > 0 || parameters.output_time_interval > 0))
+      return true;
+    if (parameters.output_time_interval > 0)
+      {
+        const double in_intervals =
+          statistics.time / parameters.output_time_interval;
+        return std::abs(in_intervals - std::round(in_intervals)) < 1e-9;
+      }
+    return parameters.output_interval > 0 &&
+           statistics.step % parameters.output_interval == 0;
   }
 
   template <int dim>
@@ -368,11 +408,13 @@ namespace vefs
 
     for (unsigned int steps_done = 1; !is_last_step(statistics); ++steps_done)
       {
-        const double tau =
-          prescribed_velocity
-            ? choose_prescribed_time_step(statistics.time)
-            : std::min(choose_time_step(statistics.max_velocity),
-                       parameters.end_time - statistics.time);
+        double tau = prescribed_velocity
+                       ? choose_prescribed_time_step(statistics.time)
+                       : std::min(choose_time_step(statistics),
+                                  parameters.end_time - statistics.time);
+        if (parameters.output_time_interval > 0)
+          tau =
+            std::min(tau, next_output_time(statistics.time) - statistics.time);
         const double cfl =
           tau * statistics.max_velocity / levels.finest_cell_size;
         // Checked before the step, while the state is still good.
@@ -430,11 +472,11 @@ namespace vefs
             std::string failure;
             try
               {
-                statistics.linear_iterations =
-                  diffusion_step(domain,
-                                 statistics.time + tau,
-                                 tau,
-                                 expected_cfl);
+                diffusion_step(domain,
+                               statistics.time + tau,
+                               tau,
+                               expected_cfl,
+                               statistics);
               }
             catch (const SolverError &error)
               {
@@ -454,13 +496,14 @@ namespace vefs
   }
 
   template <int dim>
-  unsigned int
+  void
   Simulator<dim>::diffusion_step(const LiquidDomain<dim> &domain,
                                  const double             new_time,
                                  const double             tau,
-                                 const double             expected_cfl)
+                                 const double             expected_cfl,
+                                 StepStatistics<dim>     &statistics)
   {
-    unsigned int iterations = 0;
+    statistics.linear_iterations = 0;
     {
       TimerOutput::Scope scope(timer, "3 diffusion: setup");
       flow.setup(domain, new_time);
@@ -475,7 +518,7 @@ namespace vefs
         }
         {
           TimerOutput::Scope scope(timer, "3 diffusion: solve");
-          iterations += flow.solve();
+          statistics.linear_iterations += flow.solve();
         }
         if (contact_iteration + 1 == max_contact_iterations)
           break;
@@ -492,15 +535,17 @@ namespace vefs
       flow.copy_velocity_to(fields, known);
       if (rheology.has_stress())
         {
-          TimerOutput::Scope scope(timer, "4 stress update");
-          update_stress(fields, domain, rheology, tau);
+          TimerOutput::Scope       scope(timer, "4 stress update");
+          const StressUpdateReport report =
+            update_stress(fields, domain, rheology, tau);
+          statistics.max_velocity_gradient = report.max_velocity_gradient;
+          statistics.strain_limited_points = report.strain_limited_points;
         }
       const unsigned int layers =
         std::max<unsigned int>(parameters.extension_layers,
                                std::ceil(expected_cfl) + 2);
       extend_flow_fields(fields, known, layers);
     }
-    return iterations;
   }
 
   template <int dim>
@@ -560,9 +605,7 @@ namespace vefs
     }
     statistics_file.write(statistics);
 
-    if (parameters.output_interval > 0 &&
-        (statistics.step % parameters.output_interval == 0 ||
-         is_last_step(statistics)))
+    if (is_output_step(statistics))
       {
         TimerOutput::Scope scope(timer, "output");
         visualization.write(fields, flow, domain.fractions(), statistics.time);

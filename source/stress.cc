@@ -31,7 +31,7 @@ namespace vefs
   } // namespace
 
   template <int dim>
-  void
+  StressUpdateReport
   update_stress(TransportedFields<dim>  &fields,
                 const LiquidDomain<dim> &domain,
                 const Rheology<dim>     &rheology,
@@ -54,6 +54,7 @@ namespace vefs
                                 update_gradients);
     const FEValuesExtractors::Vector velocity(0);
     std::vector<Tensor<2, dim>> grad_u(GeometryInfo<dim>::vertices_per_cell);
+    StressUpdateReport          report;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
@@ -68,6 +69,10 @@ namespace vefs
                   fields.fields(cell->vertex_dof_index(v, first + i));
               const SymmetricTensor<2, dim> updated =
                 rheology.updated_stress(advected, grad_u[v], tau);
+              report.max_velocity_gradient =
+                std::max(report.max_velocity_gradient, grad_u[v].norm());
+              if (rheology.is_strain_limited(grad_u[v], tau))
+                ++report.strain_limited_points;
               sum(cell->vertex_dof_index(v, 0)) += weight;
               for (unsigned int i = 0; i < n_stress; ++i)
                 sum(cell->vertex_dof_index(v, first + i)) +=
@@ -85,6 +90,14 @@ namespace vefs
               sum(node.dofs[first + i]) / weight;
       }
     fields.finalize();
+
+    const MPI_Comm comm =
+      fields.dof_handler.get_triangulation().get_communicator();
+    report.max_velocity_gradient =
+      Utilities::MPI::max(report.max_velocity_gradient, comm);
+    report.strain_limited_points =
+      Utilities::MPI::sum(report.strain_limited_points, comm);
+    return report;
   }
 
   template <int dim>
@@ -130,12 +143,12 @@ namespace vefs
     return measure;
   }
 
-  template void
+  template StressUpdateReport
   update_stress<2>(TransportedFields<2> &,
                    const LiquidDomain<2> &,
                    const Rheology<2> &,
                    const double);
-  template void
+  template StressUpdateReport
   update_stress<3>(TransportedFields<3> &,
                    const LiquidDomain<3> &,
                    const Rheology<3> &,

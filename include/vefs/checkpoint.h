@@ -23,7 +23,8 @@ namespace vefs
   /**
    * What the time loop carries from one step to the next besides the mesh
    * and the transported fields. Of the statistics only the step, time, tau,
-   * cfl, max_velocity (it sets the next time step), linear_iterations and
+   * cfl, max_velocity and max_velocity_gradient (they set the next time
+   * step), linear_iterations and
    * wall_time are kept: the others are measured again every step.
    */
   template <int dim>

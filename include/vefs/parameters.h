@@ -60,6 +60,16 @@ namespace vefs
     gradient_augmented
   };
 
+  /**
+   * How the stress is advanced by the velocity gradient of the step, after
+   * the diffusion step (design section 2, step 4).
+   */
+  enum class StressUpdate
+  {
+    linear,
+    exponential
+  };
+
   /** Names of the cavity walls, in boundary-id order. */
   const std::array<std::string, 6> wall_names = {
     {"x-", "x+", "y-", "y+", "z-", "z+"}};
@@ -97,6 +107,7 @@ namespace vefs
     double       end_time;
     double       time_step;
     double       target_cfl;
+    double       max_strain_per_step;
     unsigned int maximum_steps;
 
     /** Bounds of the health check done after every step. */
@@ -141,6 +152,7 @@ namespace vefs
     double       pressure_stabilization;
     double       ghost_penalty;
     double       free_surface_stabilization;
+    StressUpdate stress_update;
     unsigned int amg_smoother_sweeps;
 
     std::string prescribed_velocity;
@@ -167,6 +179,7 @@ namespace vefs
     unsigned int stop_after_steps;
 
     unsigned int output_interval;
+    double       output_time_interval;
     bool         verbose;
 
     /** Doubtful but accepted input, "entry 'X': what", for the user. */

@@ -28,17 +28,23 @@ namespace vefs
     double         volume_change      = 0;
     double         liquid_cell_volume = 0;
     Tensor<1, dim> centroid;
-    double         kinetic_energy    = 0;
-    double         potential_energy  = 0;
-    double         elastic_energy    = 0;
-    double         max_velocity      = 0;
-    double         floor_extent      = 0;
-    double         wall_height       = 0;
-    unsigned int   cells             = 0;
-    unsigned int   liquid_cells      = 0;
-    unsigned int   dofs              = 0;
-    unsigned int   linear_iterations = 0;
-    double         wall_time         = 0;
+    /**
+     * The box around the liquid: lowest point, width, the free end of a
+     * beam (see widen_to_liquid() in postprocessing.cc).
+     */
+    Point<dim>   liquid_lower;
+    Point<dim>   liquid_upper;
+    double       kinetic_energy    = 0;
+    double       potential_energy  = 0;
+    double       elastic_energy    = 0;
+    double       max_velocity      = 0;
+    double       floor_extent      = 0;
+    double       wall_height       = 0;
+    unsigned int cells             = 0;
+    unsigned int liquid_cells      = 0;
+    unsigned int dofs              = 0;
+    unsigned int linear_iterations = 0;
+    double       wall_time         = 0;
     /**
      * Only with an exact final shape: the L1 shape error (at the end time,
      * NaN before) and the surface thickness.
@@ -50,6 +56,9 @@ namespace vefs
     /** Only with a stress: see StressMeasure. */
     double       min_conformation_eigenvalue      = 1;
     unsigned int non_positive_conformation_points = 0;
+    /** Only with a stress: see StressUpdateReport. */
+    double       max_velocity_gradient = 0;
+    unsigned int strain_limited_points = 0;
     /** Only with contact walls: see ContactWalls. */
     double contact_force   = 0;
     double contact_measure = 0;

@@ -5,6 +5,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <vefs/parameters.h>
+#include <vefs/tensor_exponential.h>
 
 namespace vefs
 {
@@ -31,6 +32,8 @@ namespace vefs
       , eta_p(parameters.polymer_viscosity)
       , lambda(parameters.relaxation_time)
       , alpha(parameters.alpha)
+      , update(parameters.stress_update)
+      , max_strain(parameters.max_strain_per_step)
     {
     }
 
@@ -55,12 +58,28 @@ namespace vefs
       return has_stress() ? lambda / (lambda + alpha * tau) : 0.;
     }
 
-    /** sigma^{n+1} from the advected stress and the new velocity gradient. */
+    /**
+     * sigma^{n+1} from the advected stress and the new velocity gradient L.
+     * With c = I + sigma / G (G = eta_p / lambda), both updates carry c* by
+     * L, then relax: c^{n+1} = I + k (c' - I). Linear: c' = c* + tau (L c*
+     * + c* L^T), the formula the diffusion step sees. Exponential: c' =
+     * exp(tau L) c* exp(tau L)^T, positive definite whatever tau |L| is,
+     * with the strain tau L limited to 'Maximum strain per step' (if set).
+     */
     SymmetricTensor<2, dim>
     updated_stress(const SymmetricTensor<2, dim> &advected,
                    const Tensor<2, dim>          &grad_u,
                    const double                   tau) const
     {
+      if (update == StressUpdate::exponential)
+        {
+          const Tensor<2, dim> E =
+            tensor_exponential(limited_strain(grad_u, tau));
+          const Tensor<2, dim> carried =
+            E * Tensor<2, dim>(conformation(advected)) * transpose(E);
+          return stress_factor(tau) * (eta_p / lambda) *
+                 (symmetrize(carried) - unit_symmetric_tensor<dim>());
+        }
       const Tensor<2, dim> stretching = grad_u * advected;
       return stress_factor(tau) *
              (advected + tau * symmetrize(stretching + transpose(stretching)) +
@@ -95,9 +114,36 @@ namespace vefs
              (trace(c) - dim - (J > 0 ? std::log(J) : 0.));
     }
 
+    /**
+     * The strain tau L of the exponential update, scaled down to the norm
+     * 'Maximum strain per step' where it is larger. The time step keeps it
+     * below that bound, except in a step it could not foresee, an impact:
+     * there the limiter stretches the stress less than the velocity would,
+     * which stores less elastic energy, where the unlimited exponential
+     * would store e^(2 tau |L|) times the stress and inject energy.
+     */
+    Tensor<2, dim>
+    limited_strain(const Tensor<2, dim> &grad_u, const double tau) const
+    {
+      const Tensor<2, dim> strain = tau * grad_u;
+      const double         norm   = strain.norm();
+      return is_strain_limited(grad_u, tau) ? (max_strain / norm) * strain
+                                            : strain;
+    }
+
+    /** Whether limited_strain() scales the strain of this step down. */
+    bool
+    is_strain_limited(const Tensor<2, dim> &grad_u, const double tau) const
+    {
+      return update == StressUpdate::exponential && max_strain > 0 &&
+             tau * grad_u.norm() > max_strain;
+    }
+
   private:
-    const Regime regime;
-    const double eta_s, eta_p, lambda, alpha;
+    const Regime       regime;
+    const double       eta_s, eta_p, lambda, alpha;
+    const StressUpdate update;
+    const double       max_strain;
   };
 } // namespace vefs
 

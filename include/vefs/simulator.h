@@ -81,8 +81,20 @@ namespace vefs
     checkpoint_if_due(const StepStatistics<dim> &statistics,
                       const unsigned int         steps_done);
 
+    /**
+     * The next time step from the speeds of the @p last one: 'Time step',
+     * bounded by the target CFL number and the largest strain per step.
+     */
     double
-    choose_time_step(const double max_velocity) const;
+    choose_time_step(const StepStatistics<dim> &last) const;
+
+    /** The first multiple of 'Output/Time interval' after @p time. */
+    double
+    next_output_time(const double time) const;
+
+    /** Whether this step writes visualization files. */
+    bool
+    is_output_step(const StepStatistics<dim> &statistics) const;
 
     /** Largest prescribed speed in the liquid at @p time. */
     double
@@ -98,13 +110,15 @@ namespace vefs
     /**
      * Steps 3 and 4 of the design, then the new velocity extended beyond
      * the liquid for the next characteristics, at least @p expected_cfl
-     * cells wide: returns the Krylov iterations.
+     * cells wide. Records the Krylov iterations and what the stress update
+     * reports in @p statistics.
      */
-    unsigned int
+    void
     diffusion_step(const LiquidDomain<dim> &domain,
                    const double             new_time,
                    const double             tau,
-                   const double             expected_cfl);
+                   const double             expected_cfl,
+                   StepStatistics<dim>     &statistics);
 
     /** The regime and the mode, for the banner. */
     std::string

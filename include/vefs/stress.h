@@ -16,10 +16,23 @@ namespace vefs
    * velocity gradient at a node is the volume-weighted average of the
    * gradients of the liquid cells around it, so that a liquid at rest keeps
    * its stress exactly. Other nodes keep their values (the extension
-   * overwrites them).
+   * overwrites them). Returns the largest velocity gradient it met and how
+   * often the strain limiter acted.
    */
+  /** What the stress update reports of the velocity gradient it used. */
+  struct StressUpdateReport
+  {
+    /**
+     * Largest |grad u| (Frobenius norm) at the nodes updated: tau times it
+     * is the strain of one step, which the update resolves only if small.
+     */
+    double max_velocity_gradient = 0;
+    /** Node values (per cell) whose strain the limiter scaled down. */
+    unsigned int strain_limited_points = 0;
+  };
+
   template <int dim>
-  void
+  StressUpdateReport
   update_stress(TransportedFields<dim>  &fields,
                 const LiquidDomain<dim> &domain,
                 const Rheology<dim>     &rheology,
