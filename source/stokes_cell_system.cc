@@ -23,10 +23,6 @@ namespace vefs
                 fields.mapping,
                 flow_fe,
                 update_values | update_gradients | update_JxW_values)
-    , advected(domain,
-               fields.mapping,
-               fields.fe,
-               update_values | update_gradients)
   {
     for (unsigned int d = 0; d < dim; ++d)
       gravity[d] = parameters.gravity[d];
@@ -44,7 +40,12 @@ namespace vefs
     pressure_mass.reinit(n_dofs);
     component.resize(n_dofs);
     for (unsigned int i = 0; i < n_dofs; ++i)
-      component[i] = flow_fe.system_to_component_index(i).first;
+      {
+        component[i] = flow_fe.system_to_component_index(i).first;
+        // FE_Q(1): the dof of a base element is that of the vertex.
+        if (component[i] == dim)
+          vertex_shape[flow_fe.system_to_component_index(i).second] = i;
+      }
     stretching.resize(n_dofs);
     phi_u.resize(n_dofs);
     eps_u.resize(n_dofs);
@@ -58,28 +59,14 @@ namespace vefs
   StokesCellSystem<dim>::compute(
     const typename DoFHandler<dim>::active_cell_iterator &cell)
   {
-    const FEValuesExtractors::Vector             velocity(0);
-    const FEValuesExtractors::Scalar             pressure(dim);
-    const FEValuesExtractors::SymmetricTensor<2> stress(
-      TransportedFields<dim>::first_stress_component);
-    const bool         with_stress = rheology.has_stress();
-    const unsigned int n_dofs      = matrix.m();
-    const double       rho         = parameters.density;
+    const FEValuesExtractors::Vector velocity(0);
+    const FEValuesExtractors::Scalar pressure(dim);
+    const bool                       with_stress = rheology.has_stress();
+    const unsigned int               n_dofs      = matrix.m();
+    const double                     rho         = parameters.density;
 
     const FEValues<dim> &values = fe_values.reinit(cell);
-    const FEValues<dim> &advected_values =
-      advected.reinit(fields.cell_of(cell));
-    const unsigned int n_q = values.n_quadrature_points;
-    u_star.resize(n_q);
-    advected_values[velocity].get_function_values(fields.fields, u_star);
-    if (with_stress)
-      {
-        sigma_star.resize(n_q);
-        div_sigma_star.resize(n_q);
-        advected_values[stress].get_function_values(fields.fields, sigma_star);
-        advected_values[stress].get_function_divergences(fields.fields,
-                                                         div_sigma_star);
-      }
+    evaluate_advected_fields(values, fields.cell_of(cell));
 
     const double h = cell->minimum_vertex_distance();
     const double tau_K =
@@ -161,6 +148,52 @@ namespace vefs
               JxW;
             if (with_stress && i_is_u)
               rhs(i) -= kept * sigma_star[q] * eps_u[i] * JxW;
+          }
+      }
+  }
+
+  template <int dim>
+  void
+  StokesCellSystem<dim>::evaluate_advected_fields(
+    const FEValues<dim>                                  &values,
+    const typename DoFHandler<dim>::active_cell_iterator &transport_cell)
+  {
+    // The transported fields are Q1 on the same cell: their values follow
+    // from the vertex values and the Q1 shape functions the flow element
+    // already has at these points (those of the pressure), without an
+    // FEValues of their own.
+    const unsigned int n_q         = values.n_quadrature_points;
+    const bool         with_stress = rheology.has_stress();
+    u_star.assign(n_q, Tensor<1, dim>());
+    if (with_stress)
+      {
+        sigma_star.assign(n_q, SymmetricTensor<2, dim>());
+        div_sigma_star.assign(n_q, Tensor<1, dim>());
+      }
+    for (const unsigned int v : transport_cell->vertex_indices())
+      {
+        Tensor<1, dim> u;
+        for (unsigned int d = 0; d < dim; ++d)
+          u[d] = fields.fields(transport_cell->vertex_dof_index(v, d));
+        SymmetricTensor<2, dim> sigma;
+        if (with_stress)
+          for (unsigned int c = 0;
+               c < TransportedFields<dim>::n_stress_components;
+               ++c)
+            sigma[SymmetricTensor<2, dim>::unrolled_to_component_indices(c)] =
+              fields.fields(transport_cell->vertex_dof_index(
+                v,
+                TransportedFields<dim>::first_stress_component + c));
+        const unsigned int k = vertex_shape[v];
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const double phi = values.shape_value(k, q);
+            u_star[q] += phi * u;
+            if (with_stress)
+              {
+                sigma_star[q] += phi * sigma;
+                div_sigma_star[q] += sigma * values.shape_grad(k, q);
+              }
           }
       }
   }

@@ -56,6 +56,15 @@ namespace vefs
 
   private:
     /**
+     * u*, sigma* and div sigma* at the quadrature points of @p values from
+     * the vertex values of the transported fields on @p transport_cell.
+     */
+    void
+    evaluate_advected_fields(
+      const FEValues<dim>                                  &values,
+      const typename DoFHandler<dim>::active_cell_iterator &transport_cell);
+
+    /**
      * The terms on the free surface of a cut cell: the p = 0 penalty of the
      * Schur preconditioner and the free-surface stabilisation.
      */
@@ -76,11 +85,12 @@ namespace vefs
     double                        regularization;
 
     LiquidValues<dim> fe_values;
-    LiquidValues<dim> advected;
 
-    std::vector<unsigned int>            component;
-    std::vector<Tensor<1, dim>>          u_star;
-    std::vector<SymmetricTensor<2, dim>> sigma_star;
+    std::vector<unsigned int> component;
+    /** The pressure shape function of each vertex: its Q1 function. */
+    std::array<unsigned int, GeometryInfo<dim>::vertices_per_cell> vertex_shape;
+    std::vector<Tensor<1, dim>>                                    u_star;
+    std::vector<SymmetricTensor<2, dim>>                           sigma_star;
     std::vector<Tensor<1, dim>>          div_sigma_star;
     std::vector<Tensor<2, dim>>          stretching;
     std::vector<Tensor<1, dim>>          phi_u;
