@@ -6,6 +6,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <vefs/box_q1_values.h>
 #include <vefs/liquid_domain.h>
 #include <vefs/parameters.h>
 #include <vefs/rheology.h>
@@ -56,12 +57,11 @@ namespace vefs
 
   private:
     /**
-     * u*, sigma* and div sigma* at the quadrature points of @p values from
+     * u*, sigma* and div sigma* at the quadrature points of values from
      * the vertex values of the transported fields on @p transport_cell.
      */
     void
     evaluate_advected_fields(
-      const FEValues<dim>                                  &values,
       const typename DoFHandler<dim>::active_cell_iterator &transport_cell);
 
     /**
@@ -84,16 +84,20 @@ namespace vefs
     Tensor<1, dim>                gravity;
     double                        regularization;
 
-    LiquidValues<dim> fe_values;
+    /** The Gauss rule of a full cell. */
+    const QGauss<dim>     full_cell_rule;
+    BoxCellValues<dim>    values;
+    BoxSurfaceValues<dim> surface_values;
 
     std::vector<unsigned int> component;
-    /** The pressure shape function of each vertex: its Q1 function. */
-    std::array<unsigned int, GeometryInfo<dim>::vertices_per_cell> vertex_shape;
-    std::vector<Tensor<1, dim>>                                    u_star;
-    std::vector<SymmetricTensor<2, dim>>                           sigma_star;
+    /** The vertex of each dof (FE_Q(1) in every component). */
+    std::vector<unsigned int>            vertex;
+    std::vector<Tensor<1, dim>>          u_star;
+    std::vector<SymmetricTensor<2, dim>> sigma_star;
     std::vector<Tensor<1, dim>>          div_sigma_star;
     std::vector<Tensor<2, dim>>          stretching;
     std::vector<Tensor<1, dim>>          phi_u;
+    std::vector<Tensor<2, dim>>          grad_u;
     std::vector<SymmetricTensor<2, dim>> eps_u;
     std::vector<double>                  div_u;
     std::vector<double>                  phi_p;
