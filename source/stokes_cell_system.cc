@@ -17,7 +17,7 @@ namespace vefs
     , tau(tau)
     , mu(rheology.effective_viscosity(tau))
     , kept(rheology.stress_factor(tau))
-    , full_cell_rule(LiquidDomain<dim>::n_gauss_points)
+    , liquid_values(domain)
   {
     for (unsigned int d = 0; d < dim; ++d)
       gravity[d] = parameters.gravity[d];
@@ -55,16 +55,14 @@ namespace vefs
   StokesCellSystem<dim>::compute(
     const typename DoFHandler<dim>::active_cell_iterator &cell)
   {
-    const FEValuesExtractors::Vector velocity(0);
-    const FEValuesExtractors::Scalar pressure(dim);
-    const bool                       with_stress = rheology.has_stress();
-    const unsigned int               n_dofs      = matrix.m();
-    const double                     rho         = parameters.density;
+    const bool         with_stress = rheology.has_stress();
+    const unsigned int n_dofs      = matrix.m();
+    const double       rho         = parameters.density;
 
     const bool is_cut =
       domain.location(cell) == LiquidDomain<dim>::Location::cut;
-    values.reinit(cell, is_cut ? domain.cut_cell(cell).inside : full_cell_rule);
-    evaluate_advected_fields(fields.cell_of(cell));
+    const BoxCellValues<dim> &values = liquid_values.reinit(cell);
+    evaluate_advected_fields(values, fields.cell_of(cell));
 
     const double h = cell->minimum_vertex_distance();
     const double tau_K =
@@ -168,6 +166,7 @@ namespace vefs
   template <int dim>
   void
   StokesCellSystem<dim>::evaluate_advected_fields(
+    const BoxCellValues<dim>                             &values,
     const typename DoFHandler<dim>::active_cell_iterator &transport_cell)
   {
     // The transported fields are Q1 on the same cell: their values follow

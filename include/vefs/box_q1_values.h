@@ -79,13 +79,18 @@ namespace vefs
       double               volume = 1;
       for (unsigned int d = 0; d < dim; ++d)
         volume *= extent[d];
+      const Point<dim> lower = cell->vertex(0);
       shape.resize(n_q);
       gradient.resize(n_q);
       JxW.resize(n_q);
+      point.resize(n_q);
       for (unsigned int q = 0; q < n_q; ++q)
         {
           const Point<dim> &xi = quadrature.point(q);
           JxW[q]               = quadrature.weight(q) * volume;
+          point[q]             = lower;
+          for (unsigned int d = 0; d < dim; ++d)
+            point[q][d] += extent[d] * xi[d];
           for (unsigned int v = 0; v < n_vertices; ++v)
             {
               shape[q][v] = internal::q1_shape(v, xi);
@@ -101,10 +106,23 @@ namespace vefs
       return JxW.size();
     }
 
+    /** The value at point @p q of the Q1 field with these vertex values. */
+    template <typename T>
+    T
+    value(const std::array<T, n_vertices> &vertex_values,
+          const unsigned int               q) const
+    {
+      T result = shape[q][0] * vertex_values[0];
+      for (unsigned int v = 1; v < n_vertices; ++v)
+        result += shape[q][v] * vertex_values[v];
+      return result;
+    }
+
     /** Shape function of vertex v at point q: shape[q][v]. */
     std::vector<std::array<double, n_vertices>>         shape;
     std::vector<std::array<Tensor<1, dim>, n_vertices>> gradient;
     std::vector<double>                                 JxW;
+    std::vector<Point<dim>>                             point;
   };
 
   /**

@@ -57,11 +57,12 @@ namespace vefs
 
   private:
     /**
-     * u*, sigma* and div sigma* at the quadrature points of values from
+     * u*, sigma* and div sigma* at the quadrature points of @p values from
      * the vertex values of the transported fields on @p transport_cell.
      */
     void
     evaluate_advected_fields(
+      const BoxCellValues<dim>                             &values,
       const typename DoFHandler<dim>::active_cell_iterator &transport_cell);
 
     /**
@@ -84,9 +85,7 @@ namespace vefs
     Tensor<1, dim>                gravity;
     double                        regularization;
 
-    /** The Gauss rule of a full cell. */
-    const QGauss<dim>     full_cell_rule;
-    BoxCellValues<dim>    values;
+    LiquidValues<dim>     liquid_values;
     BoxSurfaceValues<dim> surface_values;
 
     std::vector<unsigned int> component;
