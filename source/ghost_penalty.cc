@@ -31,7 +31,7 @@ namespace vefs
                                    const Faces              faces)
   {
     using Location = typename LiquidDomain<dim>::Location;
-    std::vector<types::global_dof_index> dofs, neighbor_dofs;
+    std::vector<types::global_dof_index> dofs, cell_dofs, neighbor_dofs;
     const auto                           visit = [&](const auto        &cell,
                            const unsigned int face,
                            const unsigned int subface,
@@ -49,15 +49,25 @@ namespace vefs
         return;
       if (!matrices_wanted)
         {
-          // The sparsity pattern needs only the dofs of both cells.
-          dofs.resize(cell->get_fe().n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
+          // The sparsity pattern needs only the dofs of both cells, and
+          // couples each component with itself only.
+          cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(cell_dofs);
           neighbor_dofs.resize(neighbor->get_fe().n_dofs_per_cell());
           neighbor->get_dof_indices(neighbor_dofs);
-          dofs.insert(dofs.end(), neighbor_dofs.begin(), neighbor_dofs.end());
-          std::sort(dofs.begin(), dofs.end());
-          dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-          action(matrix, schur, dofs);
+          for (unsigned int c = 0; c < flow_fe.n_components(); ++c)
+            {
+              dofs.clear();
+              for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+                if (flow_fe.system_to_component_index(i).first == c)
+                  {
+                    dofs.push_back(cell_dofs[i]);
+                    dofs.push_back(neighbor_dofs[i]);
+                  }
+              std::sort(dofs.begin(), dofs.end());
+              dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+              action(matrix, schur, dofs);
+            }
           return;
         }
       interface_values

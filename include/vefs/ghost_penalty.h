@@ -55,8 +55,9 @@ namespace vefs
      * on the other side, once: a face between two cut cells is visited from
      * the one with the smaller CellId (which may be on another rank) and
      * carries half the penalty of each side. With @p matrices_wanted false the
-     * matrices are empty and the dofs are those of both cells, sorted: for the
-     * sparsity pattern.
+     * matrices are empty and @p action is called once per component with
+     * the dofs of that component on both cells, sorted: for the sparsity
+     * pattern (the penalty couples each component with itself only).
      * @p faces may restrict the visit to faces next to the walls.
      */
     void
