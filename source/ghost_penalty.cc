@@ -14,6 +14,7 @@ namespace vefs
     : parameters(parameters)
     , tau(tau)
     , mu(rheology.effective_viscosity(tau))
+    , flow_fe(flow_fe)
     , interface_values(flow_fe,
                        QGauss<dim - 1>(2),
                        update_gradients | update_normal_vectors |
@@ -30,7 +31,7 @@ namespace vefs
                                    const Faces              faces)
   {
     using Location = typename LiquidDomain<dim>::Location;
-    std::vector<types::global_dof_index> dofs, neighbor_dofs;
+    std::vector<types::global_dof_index> dofs, cell_dofs, neighbor_dofs;
     const auto                           visit = [&](const auto        &cell,
                            const unsigned int face,
                            const unsigned int subface,
@@ -41,17 +42,32 @@ namespace vefs
           (faces == Faces::next_to_walls && !cell->at_boundary() &&
            !neighbor->at_boundary()))
         return;
+      // A face between two cut cells is seen from both: it belongs to the
+      // side with the smaller CellId, on whichever rank owns that side.
+      const bool neighbor_is_cut = domain.location(neighbor) == Location::cut;
+      if (neighbor_is_cut && neighbor->id() < cell->id())
+        return;
       if (!matrices_wanted)
         {
-          // The sparsity pattern needs only the dofs of both cells.
-          dofs.resize(cell->get_fe().n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
+          // The sparsity pattern needs only the dofs of both cells, and
+          // couples each component with itself only.
+          cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(cell_dofs);
           neighbor_dofs.resize(neighbor->get_fe().n_dofs_per_cell());
           neighbor->get_dof_indices(neighbor_dofs);
-          dofs.insert(dofs.end(), neighbor_dofs.begin(), neighbor_dofs.end());
-          std::sort(dofs.begin(), dofs.end());
-          dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-          action(matrix, schur, dofs);
+          for (unsigned int c = 0; c < flow_fe.n_components(); ++c)
+            {
+              dofs.clear();
+              for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+                if (flow_fe.system_to_component_index(i).first == c)
+                  {
+                    dofs.push_back(cell_dofs[i]);
+                    dofs.push_back(neighbor_dofs[i]);
+                  }
+              std::sort(dofs.begin(), dofs.end());
+              dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+              action(matrix, schur, dofs);
+            }
           return;
         }
       interface_values
@@ -59,7 +75,14 @@ namespace vefs
       const unsigned int n = interface_values.n_current_interface_dofs();
       matrix.reinit(n, n);
       schur.reinit(n, n);
-      compute(cell, domain.location(neighbor) == Location::cut ? 0.5 : 1.);
+      // Between two cut cells each side weighs in with half the penalty
+      // and its own h.
+      const Weights weights =
+        neighbor_is_cut
+                                    ? face_weights(cell->minimum_vertex_distance(), 0.5) +
+              face_weights(neighbor->minimum_vertex_distance(), 0.5)
+                                    : face_weights(cell->minimum_vertex_distance(), 1.);
+      compute(weights);
       action(matrix, schur, interface_values.get_interface_dof_indices());
     };
 
@@ -102,44 +125,58 @@ namespace vefs
   }
 
   template <int dim>
-  void
-  GhostPenalty<dim>::compute(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    const double                                          weight)
+  typename GhostPenalty<dim>::Weights
+  GhostPenalty<dim>::face_weights(const double h, const double share) const
   {
     const double rho   = parameters.density;
-    const double gamma = parameters.ghost_penalty * weight;
-    const double h     = cell->minimum_vertex_distance();
+    const double gamma = parameters.ghost_penalty * share;
     const double tau_K =
       parameters.pressure_stabilization / (rho / tau + 4 * mu / (h * h));
-    const double velocity_weight = gamma * (mu + rho * h * h / tau) * h;
-    const double pressure_weight = gamma * tau_K * h;
-    const double schur_weight    = gamma * (tau / rho + tau_K) * h;
+    return {gamma * (mu + rho * h * h / tau) * h,
+            gamma * tau_K * h,
+            gamma * (tau / rho + tau_K) * h};
+  }
 
-    const FEValuesExtractors::Vector velocity(0);
-    const FEValuesExtractors::Scalar pressure(dim);
-    const unsigned int          n = interface_values.n_current_interface_dofs();
-    std::vector<Tensor<1, dim>> jump_u(n);
-    std::vector<double>         jump_p(n);
+  template <int dim>
+  void
+  GhostPenalty<dim>::compute(const Weights &weights)
+  {
+    // Each interface dof belongs to one component: the jump of its normal
+    // derivative is a scalar, and dofs of different components do not
+    // couple.
+    const unsigned int n = interface_values.n_current_interface_dofs();
+    component.resize(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const auto dof_pair = interface_values.interface_dof_to_dof_indices(i);
+        component[i] =
+          flow_fe
+            .system_to_component_index(
+              dof_pair[0] != numbers::invalid_unsigned_int ? dof_pair[0]
+                                                           : dof_pair[1])
+            .first;
+      }
+    jump.resize(n);
     for (const unsigned int q : interface_values.quadrature_point_indices())
       {
         const Tensor<1, dim> normal = interface_values.normal(q);
         for (unsigned int i = 0; i < n; ++i)
-          {
-            jump_u[i] =
-              interface_values[velocity].jump_in_gradients(i, q) * normal;
-            jump_p[i] =
-              interface_values[pressure].jump_in_gradients(i, q) * normal;
-          }
+          jump[i] =
+            interface_values.jump_in_shape_gradients(i, q, component[i]) *
+            normal;
         const double JxW = interface_values.JxW(q);
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
-            {
-              matrix(i, j) += (velocity_weight * jump_u[i] * jump_u[j] -
-                               pressure_weight * jump_p[i] * jump_p[j]) *
-                              JxW;
-              schur(i, j) += schur_weight * jump_p[i] * jump_p[j] * JxW;
-            }
+            if (component[i] == component[j])
+              {
+                if (component[i] < dim)
+                  matrix(i, j) += weights.velocity * jump[i] * jump[j] * JxW;
+                else
+                  {
+                    matrix(i, j) -= weights.pressure * jump[i] * jump[j] * JxW;
+                    schur(i, j) += weights.schur * jump[i] * jump[j] * JxW;
+                  }
+              }
       }
   }
 

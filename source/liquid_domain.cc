@@ -134,24 +134,6 @@ namespace vefs
         }
   }
 
-  template <int dim>
-  LiquidValues<dim>::LiquidValues(const LiquidDomain<dim>  &domain,
-                                  const Mapping<dim>       &mapping,
-                                  const FiniteElement<dim> &fe,
-                                  const UpdateFlags         flags)
-    : domain(domain)
-    , mapping(mapping)
-    , fe(fe)
-    , flags(flags)
-    , full_values(mapping,
-                  fe,
-                  QGauss<dim>(LiquidDomain<dim>::n_gauss_points),
-                  flags)
-  {
-  }
-
   template class LiquidDomain<2>;
   template class LiquidDomain<3>;
-  template class LiquidValues<2>;
-  template class LiquidValues<3>;
 } // namespace vefs

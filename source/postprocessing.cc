@@ -1,5 +1,4 @@
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_values.h>
 
 #include <vefs/checkpoint.h>
 #include <vefs/free_surface.h>
@@ -81,13 +80,8 @@ namespace vefs
       gravity[d] = parameters.gravity[d];
 
     // The energies over the liquid as the flow step sees it.
-    LiquidValues<dim>                liquid_values(domain,
-                                    fields.mapping,
-                                    fields.fe,
-                                    update_values | update_quadrature_points |
-                                      update_JxW_values);
-    const FEValuesExtractors::Vector velocity(0);
-    std::vector<Tensor<1, dim>>      u;
+    LiquidValues<dim> liquid_values(domain);
+    std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
 
     double       kinetic = 0, potential = 0, liquid_volume = 0, max_speed = 0;
     unsigned int liquid_cells = 0;
@@ -102,23 +96,21 @@ namespace vefs
         {
           ++liquid_cells;
           widen_to_liquid(cell, fields, domain, lower, upper);
-          const FEValues<dim> &fe_values = liquid_values.reinit(cell);
-          u.resize(fe_values.n_quadrature_points);
-          fe_values[velocity].get_function_values(fields.fields, u);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              liquid_volume += fe_values.JxW(q);
-              kinetic += 0.5 * parameters.density * u[q].norm_square() *
-                         fe_values.JxW(q);
-              potential -= parameters.density * gravity *
-                           fe_values.quadrature_point(q) * fe_values.JxW(q);
-            }
           for (const unsigned int v : cell->vertex_indices())
             {
-              Tensor<1, dim> vertex_u;
               for (unsigned int d = 0; d < dim; ++d)
-                vertex_u[d] = fields.fields(cell->vertex_dof_index(v, d));
-              max_speed = std::max(max_speed, vertex_u.norm());
+                vertex_u[v][d] = fields.fields(cell->vertex_dof_index(v, d));
+              max_speed = std::max(max_speed, vertex_u[v].norm());
+            }
+          const BoxCellValues<dim> &values = liquid_values.reinit(cell);
+          for (unsigned int q = 0; q < values.size(); ++q)
+            {
+              const Tensor<1, dim> u = values.value(vertex_u, q);
+              liquid_volume += values.JxW[q];
+              kinetic +=
+                0.5 * parameters.density * u.norm_square() * values.JxW[q];
+              potential -=
+                parameters.density * gravity * values.point[q] * values.JxW[q];
             }
         }
     s.kinetic_energy     = Utilities::MPI::sum(kinetic, comm);

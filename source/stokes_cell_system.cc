@@ -1,5 +1,3 @@
-#include <deal.II/non_matching/fe_immersed_values.h>
-
 #include <vefs/stokes_cell_system.h>
 
 namespace vefs
@@ -19,14 +17,7 @@ namespace vefs
     , tau(tau)
     , mu(rheology.effective_viscosity(tau))
     , kept(rheology.stress_factor(tau))
-    , fe_values(domain,
-                fields.mapping,
-                flow_fe,
-                update_values | update_gradients | update_JxW_values)
-    , advected(domain,
-               fields.mapping,
-               fields.fe,
-               update_values | update_gradients)
+    , liquid_values(domain)
   {
     for (unsigned int d = 0; d < dim; ++d)
       gravity[d] = parameters.gravity[d];
@@ -43,9 +34,15 @@ namespace vefs
     rhs.reinit(n_dofs);
     pressure_mass.reinit(n_dofs);
     component.resize(n_dofs);
+    vertex.resize(n_dofs);
     for (unsigned int i = 0; i < n_dofs; ++i)
-      component[i] = flow_fe.system_to_component_index(i).first;
+      {
+        component[i] = flow_fe.system_to_component_index(i).first;
+        // FE_Q(1): the dof of a base element is that of the vertex.
+        vertex[i] = flow_fe.system_to_component_index(i).second;
+      }
     stretching.resize(n_dofs);
+    grad_u.resize(n_dofs);
     phi_u.resize(n_dofs);
     eps_u.resize(n_dofs);
     div_u.resize(n_dofs);
@@ -58,28 +55,14 @@ namespace vefs
   StokesCellSystem<dim>::compute(
     const typename DoFHandler<dim>::active_cell_iterator &cell)
   {
-    const FEValuesExtractors::Vector             velocity(0);
-    const FEValuesExtractors::Scalar             pressure(dim);
-    const FEValuesExtractors::SymmetricTensor<2> stress(
-      TransportedFields<dim>::first_stress_component);
     const bool         with_stress = rheology.has_stress();
     const unsigned int n_dofs      = matrix.m();
     const double       rho         = parameters.density;
 
-    const FEValues<dim> &values = fe_values.reinit(cell);
-    const FEValues<dim> &advected_values =
-      advected.reinit(fields.cell_of(cell));
-    const unsigned int n_q = values.n_quadrature_points;
-    u_star.resize(n_q);
-    advected_values[velocity].get_function_values(fields.fields, u_star);
-    if (with_stress)
-      {
-        sigma_star.resize(n_q);
-        div_sigma_star.resize(n_q);
-        advected_values[stress].get_function_values(fields.fields, sigma_star);
-        advected_values[stress].get_function_divergences(fields.fields,
-                                                         div_sigma_star);
-      }
+    const bool is_cut =
+      domain.location(cell) == LiquidDomain<dim>::Location::cut;
+    const BoxCellValues<dim> &values = liquid_values.reinit(cell);
+    evaluate_advected_fields(values, fields.cell_of(cell));
 
     const double h = cell->minimum_vertex_distance();
     const double tau_K =
@@ -95,20 +78,36 @@ namespace vefs
     for (unsigned int i = 0; i < n_dofs; ++i)
       if (component[i] == dim)
         pressure_mass(i) = cell->measure() / cell->n_vertices() / mu;
-    if (domain.location(cell) == LiquidDomain<dim>::Location::cut)
+    if (is_cut)
       add_surface_terms(cell, h);
 
-    for (const unsigned int q : values.quadrature_point_indices())
+    for (unsigned int q = 0; q < values.size(); ++q)
       {
+        // Each shape function is the Q1 function of its vertex in one
+        // component.
         for (unsigned int k = 0; k < n_dofs; ++k)
           {
-            phi_u[k]  = values[velocity].value(k, q);
-            eps_u[k]  = values[velocity].symmetric_gradient(k, q);
-            div_u[k]  = values[velocity].divergence(k, q);
-            phi_p[k]  = values[pressure].value(k, q);
-            grad_p[k] = values[pressure].gradient(k, q);
+            const double          phi  = values.shape[q][vertex[k]];
+            const Tensor<1, dim> &grad = values.gradient[q][vertex[k]];
+            const unsigned int    c    = component[k];
+            phi_u[k]                   = Tensor<1, dim>();
+            grad_u[k]                  = Tensor<2, dim>();
+            phi_p[k]                   = 0;
+            grad_p[k]                  = Tensor<1, dim>();
+            if (c < dim)
+              {
+                phi_u[k][c]  = phi;
+                grad_u[k][c] = grad;
+              }
+            else
+              {
+                phi_p[k]  = phi;
+                grad_p[k] = grad;
+              }
+            eps_u[k] = symmetrize(grad_u[k]);
+            div_u[k] = trace(grad_u[k]);
           }
-        const double   JxW     = values.JxW(q);
+        const double   JxW     = values.JxW[q];
         Tensor<1, dim> forcing = rho / tau * u_star[q] + rho * gravity;
         // The explicit part of the stress, k div sigma* (k = kept), is a
         // force in the strong residual of the pressure stabilisation.
@@ -120,8 +119,7 @@ namespace vefs
             const Tensor<2, dim> sigma(sigma_star[q]);
             for (unsigned int j = 0; j < n_dofs; ++j)
               if (component[j] < dim)
-                stretching[j] =
-                  2 * kept * tau * values[velocity].gradient(j, q) * sigma;
+                stretching[j] = 2 * kept * tau * grad_u[j] * sigma;
           }
         // Only the blocks that can be non-zero: this loop is most of
         // the assembly, in 3D especially.
@@ -167,24 +165,61 @@ namespace vefs
 
   template <int dim>
   void
+  StokesCellSystem<dim>::evaluate_advected_fields(
+    const BoxCellValues<dim>                             &values,
+    const typename DoFHandler<dim>::active_cell_iterator &transport_cell)
+  {
+    // The transported fields are Q1 on the same cell: their values follow
+    // from the vertex values and the Q1 shape functions at these points.
+    const unsigned int n_q         = values.size();
+    const bool         with_stress = rheology.has_stress();
+    u_star.assign(n_q, Tensor<1, dim>());
+    if (with_stress)
+      {
+        sigma_star.assign(n_q, SymmetricTensor<2, dim>());
+        div_sigma_star.assign(n_q, Tensor<1, dim>());
+      }
+    for (const unsigned int v : transport_cell->vertex_indices())
+      {
+        Tensor<1, dim> u;
+        for (unsigned int d = 0; d < dim; ++d)
+          u[d] = fields.fields(transport_cell->vertex_dof_index(v, d));
+        SymmetricTensor<2, dim> sigma;
+        if (with_stress)
+          for (unsigned int c = 0;
+               c < TransportedFields<dim>::n_stress_components;
+               ++c)
+            sigma[SymmetricTensor<2, dim>::unrolled_to_component_indices(c)] =
+              fields.fields(transport_cell->vertex_dof_index(
+                v,
+                TransportedFields<dim>::first_stress_component + c));
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const double phi = values.shape[q][v];
+            u_star[q] += phi * u;
+            if (with_stress)
+              {
+                sigma_star[q] += phi * sigma;
+                div_sigma_star[q] += sigma * values.gradient[q][v];
+              }
+          }
+      }
+  }
+
+  template <int dim>
+  void
   StokesCellSystem<dim>::add_surface_terms(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const double                                          h)
   {
-    NonMatching::FEImmersedSurfaceValues<dim> surface_values(
-      fields.mapping,
-      flow_fe,
-      domain.cut_cell(cell).surface,
-      update_values | update_normal_vectors | update_JxW_values);
-    surface_values.reinit(cell);
-    const FEValuesExtractors::Vector velocity(0);
-    const FEValuesExtractors::Scalar pressure(dim);
-    const unsigned int               n_dofs = matrix.m();
-    const double theta = parameters.free_surface_stabilization;
-    for (const unsigned int q : surface_values.quadrature_point_indices())
+    surface_values.reinit(cell, domain.cut_cell(cell).surface);
+    const unsigned int n_dofs = matrix.m();
+    const double       theta  = parameters.free_surface_stabilization;
+    for (unsigned int q = 0; q < surface_values.size(); ++q)
       {
-        const double         JxW    = surface_values.JxW(q);
-        const Tensor<1, dim> normal = surface_values.normal_vector(q);
+        const double          JxW    = surface_values.JxW[q];
+        const Tensor<1, dim> &normal = surface_values.normal[q];
+        const auto           &phi    = surface_values.shape[q];
         // The weight of the stabilisation: theta tau rho |g.n| where gravity
         // presses the surface back (g.n < 0, n pointing out of the liquid);
         // zero elsewhere, where the term would weaken the mass matrix.
@@ -197,12 +232,10 @@ namespace vefs
               // free surface (zero traction): a penalty there keeps L_w
               // regular.
               schur(i, j) += surface_penalty * schur_weight / h *
-                             surface_values[pressure].value(i, q) *
-                             surface_values[pressure].value(j, q) * JxW;
+                             phi[vertex[i]] * phi[vertex[j]] * JxW;
             else if (weight > 0 && component[i] < dim && component[j] < dim)
-              matrix(i, j) +=
-                weight * (surface_values[velocity].value(i, q) * normal) *
-                (surface_values[velocity].value(j, q) * normal) * JxW;
+              matrix(i, j) += weight * (phi[vertex[i]] * normal[component[i]]) *
+                              (phi[vertex[j]] * normal[component[j]]) * JxW;
       }
   }
 

@@ -106,27 +106,32 @@ namespace vefs
                  const LiquidDomain<dim>      &domain,
                  const Rheology<dim>          &rheology)
   {
-    LiquidValues<dim>                            liquid_values(domain,
-                                    fields.mapping,
-                                    fields.fe,
-                                    update_values | update_JxW_values);
-    const FEValuesExtractors::SymmetricTensor<2> stress(
-      TransportedFields<dim>::first_stress_component);
-    std::vector<SymmetricTensor<2, dim>> sigma;
+    LiquidValues<dim> liquid_values(domain);
+    std::array<SymmetricTensor<2, dim>, GeometryInfo<dim>::vertices_per_cell>
+      vertex_sigma;
 
     StressMeasure measure;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
-          const FEValues<dim> &fe_values = liquid_values.reinit(cell);
-          sigma.resize(fe_values.n_quadrature_points);
-          fe_values[stress].get_function_values(fields.fields, sigma);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int c = 0;
+                 c < TransportedFields<dim>::n_stress_components;
+                 ++c)
+              vertex_sigma
+                [v][SymmetricTensor<2, dim>::unrolled_to_component_indices(c)] =
+                  fields.fields(cell->vertex_dof_index(
+                    v,
+                    TransportedFields<dim>::first_stress_component + c));
+          const BoxCellValues<dim> &values = liquid_values.reinit(cell);
+          for (unsigned int q = 0; q < values.size(); ++q)
             {
+              const SymmetricTensor<2, dim> sigma =
+                values.value(vertex_sigma, q);
               measure.elastic_energy +=
-                rheology.elastic_energy_density(sigma[q]) * fe_values.JxW(q);
+                rheology.elastic_energy_density(sigma) * values.JxW[q];
               const double lowest =
-                smallest_eigenvalue(rheology.conformation(sigma[q]));
+                smallest_eigenvalue(rheology.conformation(sigma));
               measure.min_conformation_eigenvalue =
                 std::min(measure.min_conformation_eigenvalue, lowest);
               if (!(lowest > 0))

@@ -52,10 +52,12 @@ namespace vefs
 
     /**
      * Call @p action for every face of a locally owned cut cell with liquid
-     * on the other side. A face between two cut cells is seen from both,
-     * with half the weight each time (the other side may be on another
-     * rank). With @p matrices_wanted false the matrices are empty and the
-     * dofs are those of both cells, sorted: for the sparsity pattern.
+     * on the other side, once: a face between two cut cells is visited from
+     * the one with the smaller CellId (which may be on another rank) and
+     * carries half the penalty of each side. With @p matrices_wanted false the
+     * matrices are empty and @p action is called once per component with
+     * the dofs of that component on both cells, sorted: for the sparsity
+     * pattern (the penalty couples each component with itself only).
      * @p faces may restrict the visit to faces next to the walls.
      */
     void
@@ -66,17 +68,39 @@ namespace vefs
                   const Faces              faces = Faces::all);
 
   private:
-    /** The matrices of the face of the last reinit(), times @p weight. */
-    void
-    compute(const typename DoFHandler<dim>::active_cell_iterator &cell,
-            const double                                          weight);
+    /** The factors of the velocity, pressure and Schur terms of a face. */
+    struct Weights
+    {
+      double velocity;
+      double pressure;
+      double schur;
 
-    const Parameters      &parameters;
-    const double           tau;
-    const double           mu;
-    FEInterfaceValues<dim> interface_values;
-    FullMatrix<double>     matrix;
-    FullMatrix<double>     schur;
+      Weights
+      operator+(const Weights &other) const
+      {
+        return {velocity + other.velocity,
+                pressure + other.pressure,
+                schur + other.schur};
+      }
+    };
+
+    /** The factors of a side of size @p h that has a @p share of the face. */
+    Weights
+    face_weights(const double h, const double share) const;
+
+    /** The matrices of the face of the last reinit(). */
+    void
+    compute(const Weights &weights);
+
+    const Parameters         &parameters;
+    const double              tau;
+    const double              mu;
+    const FiniteElement<dim> &flow_fe;
+    FEInterfaceValues<dim>    interface_values;
+    FullMatrix<double>        matrix;
+    FullMatrix<double>        schur;
+    std::vector<unsigned int> component;
+    std::vector<double>       jump;
   };
 } // namespace vefs
 

@@ -2,13 +2,12 @@
 #define vefs_liquid_domain_h
 
 #include <deal.II/base/quadrature.h>
-#include <deal.II/fe/fe_values.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/non_matching/immersed_surface_quadrature.h>
 
+#include <vefs/box_q1_values.h>
 #include <vefs/transported_fields.h>
-
-#include <optional>
 
 namespace vefs
 {
@@ -81,41 +80,35 @@ namespace vefs
   };
 
   /**
-   * FEValues on the liquid part of a cell: a Gauss rule on a full cell, the
-   * cell's own rule on a cut one.
+   * Q1 shape functions on the liquid part of a cell: a Gauss rule on a full
+   * cell, the cell's own rule on a cut one.
    */
   template <int dim>
   class LiquidValues
   {
   public:
-    LiquidValues(const LiquidDomain<dim>  &domain,
-                 const Mapping<dim>       &mapping,
-                 const FiniteElement<dim> &fe,
-                 const UpdateFlags         flags);
+    explicit LiquidValues(const LiquidDomain<dim> &domain)
+      : domain(domain)
+      , full_cell_rule(LiquidDomain<dim>::n_gauss_points)
+    {
+    }
 
     /** Values on the liquid part of @p cell, which must hold liquid. */
     template <typename CellIterator>
-    const FEValues<dim> &
+    const BoxCellValues<dim> &
     reinit(const CellIterator &cell)
     {
-      if (domain.location(cell) != LiquidDomain<dim>::Location::cut)
-        {
-          full_values.reinit(cell);
-          return full_values;
-        }
-      // The rule differs from cut cell to cut cell.
-      cut_values.emplace(mapping, fe, domain.cut_cell(cell).inside, flags);
-      cut_values->reinit(cell);
-      return *cut_values;
+      values.reinit(cell,
+                    domain.location(cell) == LiquidDomain<dim>::Location::cut
+                      ? domain.cut_cell(cell).inside
+                      : full_cell_rule);
+      return values;
     }
 
   private:
-    const LiquidDomain<dim>     &domain;
-    const Mapping<dim>          &mapping;
-    const FiniteElement<dim>    &fe;
-    const UpdateFlags            flags;
-    FEValues<dim>                full_values;
-    std::optional<FEValues<dim>> cut_values;
+    const LiquidDomain<dim> &domain;
+    const QGauss<dim>        full_cell_rule;
+    BoxCellValues<dim>       values;
   };
 } // namespace vefs
 

@@ -6,6 +6,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <vefs/box_q1_values.h>
 #include <vefs/liquid_domain.h>
 #include <vefs/parameters.h>
 #include <vefs/rheology.h>
@@ -56,6 +57,15 @@ namespace vefs
 
   private:
     /**
+     * u*, sigma* and div sigma* at the quadrature points of @p values from
+     * the vertex values of the transported fields on @p transport_cell.
+     */
+    void
+    evaluate_advected_fields(
+      const BoxCellValues<dim>                             &values,
+      const typename DoFHandler<dim>::active_cell_iterator &transport_cell);
+
+    /**
      * The terms on the free surface of a cut cell: the p = 0 penalty of the
      * Schur preconditioner and the free-surface stabilisation.
      */
@@ -75,15 +85,18 @@ namespace vefs
     Tensor<1, dim>                gravity;
     double                        regularization;
 
-    LiquidValues<dim> fe_values;
-    LiquidValues<dim> advected;
+    LiquidValues<dim>     liquid_values;
+    BoxSurfaceValues<dim> surface_values;
 
-    std::vector<unsigned int>            component;
+    std::vector<unsigned int> component;
+    /** The vertex of each dof (FE_Q(1) in every component). */
+    std::vector<unsigned int>            vertex;
     std::vector<Tensor<1, dim>>          u_star;
     std::vector<SymmetricTensor<2, dim>> sigma_star;
     std::vector<Tensor<1, dim>>          div_sigma_star;
     std::vector<Tensor<2, dim>>          stretching;
     std::vector<Tensor<1, dim>>          phi_u;
+    std::vector<Tensor<2, dim>>          grad_u;
     std::vector<SymmetricTensor<2, dim>> eps_u;
     std::vector<double>                  div_u;
     std::vector<double>                  phi_p;
