@@ -8,8 +8,8 @@ Usage:
 Reads OUTPUT_DIR/solution.pvd, the .pvtu records it lists and their .vtu
 pieces (every MPI rank writes one piece), as deal.II writes them: XML VTK
 unstructured grids whose DataArrays are "binary" (base64), zlib-compressed
-(compressor="vtkZLibDataCompressor") or not, or "ascii".  Only the standard
-library and numpy/matplotlib are used.
+(compressor="vtkZLibDataCompressor") or not, or "ascii" (decoded by
+vtu_data.py).  Only the standard library and numpy/matplotlib are used.
 
 Every panel shows, at one output time,
   * the cells counted as liquid (liquid_fraction >= 1/2, the cells of the
@@ -22,13 +22,10 @@ given ones.
 """
 
 import argparse
-import base64
 import math
 import os
-import struct
 import sys
 import xml.etree.ElementTree as ET
-import zlib
 
 try:
     import numpy as np
@@ -37,19 +34,12 @@ try:
     import matplotlib.pyplot as plt  # noqa: E402
     from matplotlib.collections import PolyCollection  # noqa: E402
     from matplotlib.tri import Triangulation  # noqa: E402
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    from vtu_data import VTK_TYPES, data_array  # noqa: E402
 except ImportError as e:
     sys.exit("plot_free_surface.py: %s; on Debian: apt-get install "
              "python3-matplotlib "
              "python3-numpy (and run the script with /usr/bin/python3)" % e)
-
-# VTK type name -> (struct code, numpy dtype)
-_TYPES = {
-    "Int8": ("b", np.int8), "UInt8": ("B", np.uint8),
-    "Int16": ("h", np.int16), "UInt16": ("H", np.uint16),
-    "Int32": ("i", np.int32), "UInt32": ("I", np.uint32),
-    "Int64": ("q", np.int64), "UInt64": ("Q", np.uint64),
-    "Float32": ("f", np.float32), "Float64": ("d", np.float64),
-}
 
 # VTK cell types of quadrilaterals (linear and Lagrange) and triangles
 VTK_TRIANGLE, VTK_QUAD, VTK_LAGRANGE_QUADRILATERAL = 5, 9, 70
@@ -59,61 +49,10 @@ VTK_TRIANGLE, VTK_QUAD, VTK_LAGRANGE_QUADRILATERAL = 5, 9, 70
 # reading
 # --------------------------------------------------------------------------
 
-def _b64(text):
-    return base64.b64decode("".join(text.split()))
-
-
-def _decode_binary(text, dtype, header_type, compressed):
-    """Bytes of one base64 DataArray.
-
-    Uncompressed: base64(header + data), header = byte count (header_type).
-    Compressed (vtkZLibDataCompressor): base64(header) followed by
-    base64(blocks), header = [n_blocks, block size, last block size,
-    compressed size of each block]; the two base64 strings are encoded
-    separately, so the header is decoded on its own first.
-    """
-    text = "".join(text.split())
-    hcode, hsize = ("I", 4) if header_type == "UInt32" else ("Q", 8)
-    if not compressed:
-        raw = base64.b64decode(text)
-        (n,) = struct.unpack("<" + hcode, raw[:hsize])
-        return raw[hsize:hsize + n]
-    # the first base64 quantum holds n_blocks
-    first = base64.b64decode(text[:4 * int(math.ceil(hsize / 3.0)) + 4])
-    (n_blocks,) = struct.unpack("<" + hcode, first[:hsize])
-    header_bytes = (3 + n_blocks) * hsize
-    header_chars = 4 * int(math.ceil(header_bytes / 3.0))
-    header = struct.unpack("<%d%s" % (3 + n_blocks, hcode),
-                           base64.b64decode(text[:header_chars])
-                           [:header_bytes])
-    sizes = header[3:]
-    data = base64.b64decode(text[header_chars:])
-    out = []
-    pos = 0
-    for s in sizes:
-        out.append(zlib.decompress(data[pos:pos + s]))
-        pos += s
-    return b"".join(out)
-
-
 def _array(element, header_type, compressed):
     """numpy array of one <DataArray>, shape (n, components)."""
-    vtk_type = element.get("type")
-    if vtk_type not in _TYPES:
-        raise ValueError("DataArray type %s not supported" % vtk_type)
-    dtype = _TYPES[vtk_type][1]
-    ncomp = int(element.get("NumberOfComponents", "1"))
-    fmt = element.get("format", "ascii")
-    text = element.text or ""
-    if fmt == "ascii":
-        values = np.array(text.split(), dtype=dtype)
-    elif fmt == "binary":
-        raw = _decode_binary(text, dtype, header_type, compressed)
-        values = np.frombuffer(raw, dtype=np.dtype(dtype).newbyteorder("<"))
-    else:
-        raise ValueError("DataArray format %s not supported (appended data?)"
-                         % fmt)
-    return values.reshape(-1, ncomp)
+    values = data_array(element, compressed, VTK_TYPES[header_type])
+    return values.reshape(len(values), -1)
 
 
 def read_vtu(path):

@@ -8,7 +8,7 @@ Usage:
 
 Reads OUTPUT_DIR/solution.pvd (the list of .pvtu records and their times),
 each .pvtu's .vtu pieces (one per MPI rank) and OUTPUT_DIR/statistics (step
-numbers and times), with numpy and matplotlib only: the reader below knows
+numbers and times), with numpy and matplotlib only: the reader (vtu_data.py) knows
 the files deal.II's DataOut writes (inline base64, zlib compressed or not,
 UInt32 or UInt64 headers, or ascii) so that no VTK installation is needed.
 
@@ -41,88 +41,25 @@ output nearest in time; when no output was written at that step the
 substitute is printed.
 """
 import argparse
-import base64
 import math
 import os
 import sys
 import xml.etree.ElementTree as ET
-import zlib
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vefs_stats import read_statistics, read_parameters  # noqa: E402
+from vtu_data import VTK_TYPES, data_array  # noqa: E402
 
 import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-VTK_TYPES = {"Float32": "<f4", "Float64": "<f8", "Int32": "<i4",
-             "Int64": "<i8", "UInt8": "<u1", "UInt32": "<u4",
-             "UInt64": "<u8", "Int8": "<i1"}
 VTK_QUAD, VTK_HEXAHEDRON = 9, 12
 
 
 # ---------------------------------------------------------------- reading
-
-def _b64(text):
-    """Decode base64 that may lack its padding (VTK's separate chunks)."""
-    text = "".join(text.split())
-    return base64.b64decode(text + "=" * (-len(text) % 4))
-
-
-def _b64_prefix(text, n_bytes):
-    """Decode the first n_bytes of a base64 string; also return the rest.
-
-    VTK encodes a compressed array's header and its data as two separate
-    base64 strings written one after the other, so the header has to be
-    decoded on its own, padding included.
-    """
-    n_chars = 4 * ((n_bytes + 2) // 3)
-    return _b64(text[:n_chars])[:n_bytes], text[n_chars:]
-
-
-def _binary_array(text, dtype, compressed, header):
-    """Bytes of an inline binary DataArray -> numpy array."""
-    text = "".join(text.split())
-    if not text:                         # a rank without cells
-        return np.zeros(0, dtype)
-    hsize = np.dtype(header).itemsize
-    if not compressed:
-        raw = _b64(text)
-        count = int(np.frombuffer(raw[:hsize], header)[0])
-        if len(raw) >= hsize + count:
-            return np.frombuffer(raw[hsize:hsize + count], dtype)
-        # header and data encoded separately
-        head, rest = _b64_prefix(text, hsize)
-        count = int(np.frombuffer(head, header)[0])
-        return np.frombuffer(_b64(rest)[:count], dtype)
-    first, _ = _b64_prefix(text, hsize)
-    n_blocks = int(np.frombuffer(first, header)[0])
-    head, rest = _b64_prefix(text, hsize * (3 + n_blocks))
-    sizes = np.frombuffer(head, header)[3:]
-    data, pos, out = _b64(rest), 0, []
-    for size in sizes:
-        out.append(zlib.decompress(data[pos:pos + int(size)]))
-        pos += int(size)
-    return np.frombuffer(b"".join(out), dtype)
-
-
-def _data_array(element, compressed, header):
-    """One <DataArray> as a numpy array, (n, components) if vector-valued."""
-    dtype = np.dtype(VTK_TYPES[element.get("type")])
-    fmt = element.get("format", "ascii")
-    text = element.text or ""
-    if fmt == "ascii":
-        values = np.array(text.split(), dtype=dtype)
-    elif fmt == "binary":
-        values = _binary_array(text, dtype, compressed, header)
-    else:
-        raise NotImplementedError("DataArray format '%s' (only the inline "
-                                  "ascii/binary that deal.II writes)" % fmt)
-    components = int(element.get("NumberOfComponents", "1"))
-    return values.reshape(-1, components) if components > 1 else values
-
 
 def read_vtu(path, fields):
     """Points, cells (connectivity rows), cell types and the point fields
@@ -131,11 +68,11 @@ def read_vtu(path, fields):
     compressed = root.get("compressor") is not None
     header = VTK_TYPES[root.get("header_type", "UInt32")]
     piece = root.find("UnstructuredGrid/Piece")
-    points = _data_array(piece.find("Points/DataArray"), compressed, header)
+    points = data_array(piece.find("Points/DataArray"), compressed, header)
     arrays = {a.get("Name"): a for a in piece.find("Cells")}
-    conn = _data_array(arrays["connectivity"], compressed, header)
-    offsets = _data_array(arrays["offsets"], compressed, header)
-    types = _data_array(arrays["types"], compressed, header)
+    conn = data_array(arrays["connectivity"], compressed, header)
+    offsets = data_array(arrays["offsets"], compressed, header)
+    types = data_array(arrays["types"], compressed, header)
     if len(types) and np.any(np.diff(np.concatenate([[0], offsets]))
                              != offsets[0]):
         raise ValueError("%s: cells of different sizes" % path)
@@ -144,7 +81,7 @@ def read_vtu(path, fields):
     point_data = piece.find("PointData")
     for a in (point_data if point_data is not None else []):
         if a.get("Name") in fields:
-            values[a.get("Name")] = _data_array(a, compressed, header)
+            values[a.get("Name")] = data_array(a, compressed, header)
     return points, cells, types, values
 
 
