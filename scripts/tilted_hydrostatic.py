@@ -24,8 +24,6 @@ for a, b in zip(lower, upper):
     box *= b - a
 print("steps run: %d" % (len(s["step"]) - 1))
 print("initial volume / half the box: %.6f" % (s["volume"][0] / (box / 2)))
-print("flow volume / level-set volume: %.6f"
-      % (s["liquid_cell_volume"][0] / s["volume"][0]))
 print("max speed below 1e-6 m/s: %s"
       % ("yes" if max(s["max_velocity"]) < 1e-6 else "NO"))
 print("max |volume change| below 1e-9: %s"

@@ -2,6 +2,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <vefs/free_surface.h>
+#include <vefs/liquid_domain.h>
 
 namespace vefs
 {
@@ -50,7 +51,6 @@ namespace vefs
        * liquid. */
       double
       add(const typename DoFHandler<dim>::active_cell_iterator &cell,
-          const double                                          shift,
           LiquidMeasure<dim>                                   &measure)
       {
         const double width   = cell->minimum_vertex_distance() / n_sub_cells;
@@ -58,13 +58,11 @@ namespace vefs
         double       highest = -lowest;
         for (const unsigned int v : cell->vertex_indices())
           {
-            const double value =
-              fields.fields(cell->vertex_dof_index(
-                v,
-                TransportedFields<dim>::level_set_component)) +
-              shift;
-            lowest  = std::min(lowest, value);
-            highest = std::max(highest, value);
+            const double value = fields.fields(cell->vertex_dof_index(
+              v,
+              TransportedFields<dim>::level_set_component));
+            lowest             = std::min(lowest, value);
+            highest            = std::max(highest, value);
           }
         // Q1 fields take their extremes at vertices: most cells are
         // entirely liquid or entirely empty.
@@ -86,12 +84,11 @@ namespace vefs
         double liquid = 0;
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
-            const double s  = -(psi[q] + shift) / width;
+            const double s  = -psi[q] / width;
             const double dV = smooth_heaviside(s) * fe_values.JxW(q);
             liquid += dV;
             measure.first_moment += dV * fe_values.quadrature_point(q);
             const double delta = smooth_delta(s) / width * fe_values.JxW(q);
-            measure.volume_derivative -= delta;
             measure.surface_area += delta * grad_psi[q].norm();
           }
         measure.volume += liquid;
@@ -108,19 +105,17 @@ namespace vefs
 
   template <int dim>
   LiquidMeasure<dim>
-  measure_liquid(const TransportedFields<dim> &fields, const double shift)
+  measure_liquid(const TransportedFields<dim> &fields)
   {
     LiquidMeasure<dim>  measure;
     CellIntegrator<dim> integrator(fields);
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        integrator.add(cell, shift, measure);
+        integrator.add(cell, measure);
 
     const MPI_Comm comm =
       fields.dof_handler.get_triangulation().get_communicator();
-    measure.volume = Utilities::MPI::sum(measure.volume, comm);
-    measure.volume_derivative =
-      Utilities::MPI::sum(measure.volume_derivative, comm);
+    measure.volume       = Utilities::MPI::sum(measure.volume, comm);
     measure.surface_area = Utilities::MPI::sum(measure.surface_area, comm);
     for (unsigned int d = 0; d < dim; ++d)
       measure.first_moment[d] =
@@ -132,16 +127,19 @@ namespace vefs
   double
   correct_volume(TransportedFields<dim> &fields, const double target)
   {
-    // Newton's method on the shift; the volume is smooth and monotone in it.
+    // Newton's method on the shift, for the sharp volume the flow step sees.
+    // From a residual below 1e-7 the next one is below round-off: that step
+    // is taken without measuring again.
     double shift = 0;
-    for (unsigned int iteration = 0; iteration < 20; ++iteration)
+    for (unsigned int iteration = 0; iteration < 10; ++iteration)
       {
-        const auto   measure  = measure_liquid(fields, shift);
-        const double residual = measure.volume - target;
-        if (std::abs(residual) <= 1e-13 * target ||
-            measure.volume_derivative == 0)
+        const SharpVolume measure  = sharp_liquid_volume(fields, shift);
+        const double      residual = measure.volume - target;
+        if (std::abs(residual) <= 1e-14 * target || measure.derivative == 0)
           break;
-        shift -= residual / measure.volume_derivative;
+        shift -= residual / measure.derivative;
+        if (std::abs(residual) <= 1e-7 * target)
+          break;
       }
 
     for (const auto &node : fields.nodes())
@@ -162,7 +160,7 @@ namespace vefs
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
         fractions[cell->active_cell_index()] =
-          integrator.add(cell, 0, unused) / cell->measure();
+          integrator.add(cell, unused) / cell->measure();
     return fractions;
   }
 
@@ -270,8 +268,7 @@ namespace vefs
   }
 
 #define VEFS_INSTANTIATE(dim)                                                    \
-  template LiquidMeasure<dim> measure_liquid(const TransportedFields<dim> &,     \
-                                             const double);                      \
+  template LiquidMeasure<dim> measure_liquid(const TransportedFields<dim> &);    \
   template double        correct_volume(TransportedFields<dim> &, const double); \
   template Vector<float> liquid_fractions(const TransportedFields<dim> &);       \
   template double        shape_error(const TransportedFields<dim> &,             \

@@ -83,6 +83,84 @@ namespace vefs
 
       const std::array<double, n_vertices> values;
     };
+
+    /**
+     * Cuts the cells of the mesh by the Q1 level set psi + shift: where a
+     * cell lies, and for a cut cell the quadratures of its liquid part and
+     * surface on the reference cell.
+     */
+    template <int dim>
+    class CellCutter
+    {
+    public:
+      using Location = typename LiquidDomain<dim>::Location;
+
+      CellCutter(const TransportedFields<dim> &fields, const double shift)
+        : fields(fields)
+        , shift(shift)
+        , gauss_rule(QGauss<1>(LiquidDomain<dim>::n_gauss_points))
+        , generator(gauss_rule)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          upper[d] = 1;
+      }
+
+      /** Where @p cell lies; a cut cell's quadratures follow from inside()
+       * and surface() until the next call. */
+      template <typename CellIterator>
+      Location
+      cut(const CellIterator &cell)
+      {
+        double lowest  = std::numeric_limits<double>::max();
+        double highest = -lowest;
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            values[v] = fields.fields(cell->vertex_dof_index(
+                          v,
+                          TransportedFields<dim>::level_set_component)) +
+                        shift;
+            lowest  = std::min(lowest, values[v]);
+            highest = std::max(highest, values[v]);
+          }
+        // A Q1 function takes its extremes at the vertices.
+        if (!(lowest < 0))
+          return Location::empty;
+        if (highest <= 0)
+          return Location::full;
+        generator.generate(CellLevelSet<dim>(values),
+                           BoundingBox<dim>(
+                             std::make_pair(Point<dim>(), upper)));
+        return Location::cut;
+      }
+
+      const Quadrature<dim> &
+      inside() const
+      {
+        return generator.get_inside_quadrature();
+      }
+
+      const NonMatching::ImmersedSurfaceQuadrature<dim> &
+      surface() const
+      {
+        return generator.get_surface_quadrature();
+      }
+
+      /** The cut cell's level set, for the quadratures' points. */
+      CellLevelSet<dim>
+      level_set() const
+      {
+        return CellLevelSet<dim>(values);
+      }
+
+    private:
+      const TransportedFields<dim> &fields;
+      const double                  shift;
+      // The generator keeps a reference to its 1D rule.
+      const hp::QCollection<1>                          gauss_rule;
+      NonMatching::QuadratureGenerator<dim>             generator;
+      Point<dim>                                        upper;
+      std::array<double, CellLevelSet<dim>::n_vertices> values;
+    };
   } // namespace
 
   template <int dim>
@@ -91,49 +169,66 @@ namespace vefs
     , locations(fraction.size(), Location::empty)
     , cut_index(fraction.size(), numbers::invalid_unsigned_int)
   {
-    const hp::QCollection<1>              gauss_rule{QGauss<1>(n_gauss_points)};
-    NonMatching::QuadratureGenerator<dim> generator(gauss_rule);
-    Point<dim>                            upper;
-    for (unsigned int d = 0; d < dim; ++d)
-      upper[d] = 1;
-    const BoundingBox<dim> reference_cell(std::make_pair(Point<dim>(), upper));
-
-    std::array<double, CellLevelSet<dim>::n_vertices> values;
+    CellCutter<dim> cutter(fields, 0);
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
         {
-          double lowest  = std::numeric_limits<double>::max();
-          double highest = -lowest;
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              values[v] = fields.fields(cell->vertex_dof_index(
-                v,
-                TransportedFields<dim>::level_set_component));
-              lowest    = std::min(lowest, values[v]);
-              highest   = std::max(highest, values[v]);
-            }
-          // A Q1 function takes its extremes at the vertices.
           const unsigned int index = cell->active_cell_index();
-          if (!(lowest < 0))
-            continue;
-          if (highest <= 0)
+          locations[index]         = cutter.cut(cell);
+          if (locations[index] == Location::full)
+            fraction[index] = 1;
+          else if (locations[index] == Location::cut)
             {
-              locations[index] = Location::full;
-              fraction[index]  = 1;
-              continue;
+              cut_index[index] = cut_cells.size();
+              cut_cells.push_back({cutter.inside(), cutter.surface()});
+              double volume = 0;
+              for (const double w : cutter.inside().get_weights())
+                volume += w;
+              fraction[index] = volume;
             }
-          generator.generate(CellLevelSet<dim>(values), reference_cell);
-          locations[index] = Location::cut;
-          cut_index[index] = cut_cells.size();
-          cut_cells.push_back({generator.get_inside_quadrature(),
-                               generator.get_surface_quadrature()});
-          double volume = 0;
-          for (const double w : cut_cells.back().inside.get_weights())
-            volume += w;
-          fraction[index] = volume;
         }
+  }
+
+  template <int dim>
+  SharpVolume
+  sharp_liquid_volume(const TransportedFields<dim> &fields, const double shift)
+  {
+    using Location = typename LiquidDomain<dim>::Location;
+    CellCutter<dim> cutter(fields, shift);
+    SharpVolume     result;
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const Location location = cutter.cut(cell);
+          if (location == Location::full)
+            result.volume += cell->measure();
+          else if (location == Location::cut)
+            {
+              // On the reference cell dV/dshift = -int 1/|grad psi| over
+              // the surface; the box maps volumes by its measure.
+              double inside = 0, derivative = 0;
+              for (const double w : cutter.inside().get_weights())
+                inside += w;
+              const auto  level_set = cutter.level_set();
+              const auto &surface   = cutter.surface();
+              for (unsigned int q = 0; q < surface.size(); ++q)
+                derivative -= surface.weight(q) /
+                              level_set.gradient(surface.point(q)).norm();
+              result.volume += inside * cell->measure();
+              result.derivative += derivative * cell->measure();
+            }
+        }
+    const MPI_Comm comm =
+      fields.dof_handler.get_triangulation().get_communicator();
+    result.volume     = Utilities::MPI::sum(result.volume, comm);
+    result.derivative = Utilities::MPI::sum(result.derivative, comm);
+    return result;
   }
 
   template class LiquidDomain<2>;
   template class LiquidDomain<3>;
+  template SharpVolume
+  sharp_liquid_volume(const TransportedFields<2> &, const double);
+  template SharpVolume
+  sharp_liquid_volume(const TransportedFields<3> &, const double);
 } // namespace vefs

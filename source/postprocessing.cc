@@ -69,23 +69,18 @@ namespace vefs
   {
     const MPI_Comm comm =
       fields.dof_handler.get_triangulation().get_communicator();
-    const auto measure = measure_liquid(fields);
-    s.volume           = measure.volume;
-    s.surface_area     = measure.surface_area;
-    s.volume_change    = (measure.volume - expected_volume) / initial_volume;
-    s.centroid         = measure.first_moment / measure.volume;
-
     Tensor<1, dim> gravity;
     for (unsigned int d = 0; d < dim; ++d)
       gravity[d] = parameters.gravity[d];
 
-    // The energies over the liquid as the flow step sees it.
+    // Volume, centroid and energies over the liquid as the flow step sees it.
     LiquidValues<dim> liquid_values(domain);
     std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
 
-    double       kinetic = 0, potential = 0, liquid_volume = 0, max_speed = 0;
-    unsigned int liquid_cells = 0;
-    Point<dim>   lower, upper;
+    double         kinetic = 0, potential = 0, volume = 0, max_speed = 0;
+    Tensor<1, dim> first_moment;
+    unsigned int   liquid_cells = 0;
+    Point<dim>     lower, upper;
     for (unsigned int d = 0; d < dim; ++d)
       {
         lower[d] = std::numeric_limits<double>::max();
@@ -106,19 +101,22 @@ namespace vefs
           for (unsigned int q = 0; q < values.size(); ++q)
             {
               const Tensor<1, dim> u = values.value(vertex_u, q);
-              liquid_volume += values.JxW[q];
+              volume += values.JxW[q];
+              first_moment += values.JxW[q] * values.point[q];
               kinetic +=
                 0.5 * parameters.density * u.norm_square() * values.JxW[q];
               potential -=
                 parameters.density * gravity * values.point[q] * values.JxW[q];
             }
         }
-    s.kinetic_energy     = Utilities::MPI::sum(kinetic, comm);
-    s.potential_energy   = Utilities::MPI::sum(potential, comm);
-    s.elastic_energy     = 0;
-    s.liquid_cell_volume = Utilities::MPI::sum(liquid_volume, comm);
-    s.liquid_cells       = Utilities::MPI::sum(liquid_cells, comm);
-    s.max_velocity       = Utilities::MPI::max(max_speed, comm);
+    s.kinetic_energy   = Utilities::MPI::sum(kinetic, comm);
+    s.potential_energy = Utilities::MPI::sum(potential, comm);
+    s.elastic_energy   = 0;
+    s.volume           = Utilities::MPI::sum(volume, comm);
+    s.volume_change    = (s.volume - expected_volume) / initial_volume;
+    s.centroid         = Utilities::MPI::sum(first_moment, comm) / s.volume;
+    s.liquid_cells     = Utilities::MPI::sum(liquid_cells, comm);
+    s.max_velocity     = Utilities::MPI::max(max_speed, comm);
     for (unsigned int d = 0; d < dim; ++d)
       {
         s.liquid_lower[d] = Utilities::MPI::min(lower[d], comm);
@@ -183,8 +181,6 @@ namespace vefs
     add_column("cfl", [](const S &s) { return s.cfl; });
     add_column("volume", [](const S &s) { return s.volume; });
     add_column("volume_change", [](const S &s) { return s.volume_change; });
-    add_column("liquid_cell_volume",
-               [](const S &s) { return s.liquid_cell_volume; });
     for (unsigned int d = 0; d < dim; ++d)
       add_column(std::string("centroid_") + "xyz"[d],
                  [d](const S &s) { return s.centroid[d]; });
@@ -302,13 +298,15 @@ namespace vefs
       return;
     if (!header_written)
       {
-        file << "# vefs statistics, one row per time step, SI units.\n"
-             << "# volume: liquid volume from phi; volume_change: (volume - "
-                "initial volume - inflow through the walls) / initial volume; "
-                "floor_extent: largest x of liquid on the floor; "
-                "wall_height: highest liquid on the x- wall; lower_x, "
-                "upper_x, ...: the box around the liquid.\n"
-             << column_header() << '\n';
+        file
+          << "# vefs statistics, one row per time step, SI units.\n"
+          << "# volume: volume of the liquid domain of the flow step (the "
+             "level set's liquid, cut out of the cells); volume_change: (volume - "
+             "initial volume - inflow through the walls) / initial volume; "
+             "floor_extent: largest x of liquid on the floor; "
+             "wall_height: highest liquid on the x- wall; lower_x, "
+             "upper_x, ...: the box around the liquid.\n"
+          << column_header() << '\n';
         header_written = true;
       }
     for (unsigned int c = 0; c < columns.size(); ++c)

@@ -179,7 +179,7 @@ namespace vefs
         prescribed_velocity->set_time(0);
         fields.set_velocity(*prescribed_velocity);
       }
-    initial_volume  = measure_liquid(fields).volume;
+    initial_volume  = sharp_liquid_volume(fields, 0).volume;
     expected_volume = initial_volume;
     if (!std::isfinite(initial_volume) || !fields_are_finite(fields))
       throw InputError("entry 'Initial liquid/Shape': the initial level set, "
@@ -588,7 +588,7 @@ namespace vefs
           statistics.interface_thickness =
             interface_thickness(fields,
                                 liquid_fractions(fields),
-                                statistics.surface_area,
+                                measure_liquid(fields).surface_area,
                                 levels.finest_cell_size);
         }
       statistics.wall_time = wall_time_offset + wall_clock.wall_time();

@@ -9,27 +9,28 @@ namespace vefs
 {
   /**
    * The liquid indicator phi = H(-psi), integrated per cell with a
-   * sub-cell rule and a Heaviside smoothed over one sub-cell, so that the
-   * volume depends smoothly on the level set.
+   * sub-cell rule and a Heaviside smoothed over one sub-cell: the
+   * transport's view of the surface, for its thickness (interface_thickness).
+   * The volume of the statistics and of the volume correction is the sharp
+   * one of the flow step (sharp_liquid_volume()).
    */
   template <int dim>
   struct LiquidMeasure
   {
     double         volume = 0;
     Tensor<1, dim> first_moment;
-    /** d volume / d shift, for psi -> psi + shift. */
-    double volume_derivative = 0;
     /** Area (length in 2D) of the free surface, int delta(psi) |grad psi|. */
     double surface_area = 0;
   };
 
-  /** Liquid volume and its first moment, for the level set psi + shift. */
+  /** Smoothed liquid volume, its first moment and the surface area. */
   template <int dim>
   LiquidMeasure<dim>
-  measure_liquid(const TransportedFields<dim> &fields, const double shift = 0);
+  measure_liquid(const TransportedFields<dim> &fields);
 
   /**
-   * Restore the liquid volume @p target by adding one constant to psi,
+   * Restore the liquid volume @p target, as the flow step measures it
+   * (sharp_liquid_volume()), by adding one constant to psi,
    * i.e. by moving the whole free surface along its normal by the same
    * small distance. Returns that distance.
    */

@@ -79,6 +79,22 @@ namespace vefs
     std::vector<CutCell>      cut_cells;
   };
 
+  /** Volume of the liquid psi + shift < 0 and its derivative in the shift. */
+  struct SharpVolume
+  {
+    double volume     = 0;
+    double derivative = 0;
+  };
+
+  /**
+   * The liquid volume of a LiquidDomain built from the level set psi + shift
+   * (owned cells, summed over the ranks): the volume the flow step
+   * integrates over.
+   */
+  template <int dim>
+  SharpVolume
+  sharp_liquid_volume(const TransportedFields<dim> &fields, const double shift);
+
   /**
    * Q1 shape functions on the liquid part of a cell: a Gauss rule on a full
    * cell, the cell's own rule on a cut one.

@@ -25,8 +25,7 @@ namespace vefs
     double       cfl    = 0;
     double       volume = 0;
     /** Conservation error: (volume - initial - inflow) / initial. */
-    double         volume_change      = 0;
-    double         liquid_cell_volume = 0;
+    double         volume_change = 0;
     Tensor<1, dim> centroid;
     /**
      * The box around the liquid: lowest point, width, the free end of a
@@ -51,8 +50,6 @@ namespace vefs
      */
     double shape_error         = 0;
     double interface_thickness = 0;
-    /** Area (length in 2D) of the free surface. */
-    double surface_area = 0;
     /** Only with a stress: see StressMeasure. */
     double       min_conformation_eigenvalue      = 1;
     unsigned int non_positive_conformation_points = 0;
@@ -74,8 +71,8 @@ namespace vefs
                  const Point<dim>             &point);
 
   /**
-   * Measure the liquid: volume and centroid from phi, energies and the
-   * largest speed on the liquid cells, and the extents of the liquid along
+   * Measure the liquid domain of the flow step: volume, centroid, energies
+   * and the largest speed, and the extents of the liquid along
    * the floor and up the x- wall (the broken-dam front and residual height).
    */
   template <int dim>
