@@ -78,7 +78,7 @@ namespace vefs
     std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
 
     double         kinetic = 0, potential = 0, volume = 0, max_speed = 0;
-    Tensor<1, dim> first_moment;
+    Tensor<1, dim> first_moment, momentum;
     unsigned int   liquid_cells = 0;
     Point<dim>     lower, upper;
     for (unsigned int d = 0; d < dim; ++d)
@@ -103,20 +103,22 @@ namespace vefs
               const Tensor<1, dim> u = values.value(vertex_u, q);
               volume += values.JxW[q];
               first_moment += values.JxW[q] * values.point[q];
+              momentum += values.JxW[q] * u;
               kinetic +=
                 0.5 * parameters.density * u.norm_square() * values.JxW[q];
               potential -=
                 parameters.density * gravity * values.point[q] * values.JxW[q];
             }
         }
-    s.kinetic_energy   = Utilities::MPI::sum(kinetic, comm);
-    s.potential_energy = Utilities::MPI::sum(potential, comm);
-    s.elastic_energy   = 0;
-    s.volume           = Utilities::MPI::sum(volume, comm);
-    s.volume_change    = (s.volume - expected_volume) / initial_volume;
-    s.centroid         = Utilities::MPI::sum(first_moment, comm) / s.volume;
-    s.liquid_cells     = Utilities::MPI::sum(liquid_cells, comm);
-    s.max_velocity     = Utilities::MPI::max(max_speed, comm);
+    s.kinetic_energy    = Utilities::MPI::sum(kinetic, comm);
+    s.potential_energy  = Utilities::MPI::sum(potential, comm);
+    s.elastic_energy    = 0;
+    s.volume            = Utilities::MPI::sum(volume, comm);
+    s.volume_change     = (s.volume - expected_volume) / initial_volume;
+    s.centroid          = Utilities::MPI::sum(first_moment, comm) / s.volume;
+    s.centroid_velocity = Utilities::MPI::sum(momentum, comm) / s.volume;
+    s.liquid_cells      = Utilities::MPI::sum(liquid_cells, comm);
+    s.max_velocity      = Utilities::MPI::max(max_speed, comm);
     for (unsigned int d = 0; d < dim; ++d)
       {
         s.liquid_lower[d] = Utilities::MPI::min(lower[d], comm);
@@ -185,6 +187,9 @@ namespace vefs
       add_column(std::string("centroid_") + "xyz"[d],
                  [d](const S &s) { return s.centroid[d]; });
     for (unsigned int d = 0; d < dim; ++d)
+      add_column(std::string("centroid_velocity_") + "xyz"[d],
+                 [d](const S &s) { return s.centroid_velocity[d]; });
+    for (unsigned int d = 0; d < dim; ++d)
       {
         add_column(std::string("lower_") + "xyz"[d],
                    [d](const S &s) { return s.liquid_lower[d]; });
@@ -195,6 +200,9 @@ namespace vefs
     add_column("potential_energy",
                [](const S &s) { return s.potential_energy; });
     add_column("elastic_energy", [](const S &s) { return s.elastic_energy; });
+    add_column("total_energy", [](const S &s) {
+      return s.kinetic_energy + s.potential_energy + s.elastic_energy;
+    });
     add_column("max_velocity", [](const S &s) { return s.max_velocity; });
     add_column("floor_extent", [](const S &s) { return s.floor_extent; });
     add_column("wall_height", [](const S &s) { return s.wall_height; });

@@ -28,6 +28,11 @@ namespace vefs
     double         volume_change = 0;
     Tensor<1, dim> centroid;
     /**
+     * Mean velocity of the liquid, the velocity of its centroid (exact for
+     * an incompressible liquid whose volume is kept).
+     */
+    Tensor<1, dim> centroid_velocity;
+    /**
      * The box around the liquid: lowest point, width, the free end of a
      * beam (see widen_to_liquid() in postprocessing.cc).
      */
