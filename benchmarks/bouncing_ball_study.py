@@ -8,6 +8,7 @@ Usage (from anywhere):
       [--levels 4 5 6] [--time-steps 0.002 0.001] [--end-time 0.45]
       [--results-dir benchmarks/results/bouncing_ball_2d_stiff]
       [--output doc/bouncing_ball_study.md] [--no-run]
+      [--set 'Solver/Stress update=exponential' ...]
 
 Each run is the scene with Maximum level = L (finest cells 0.1 m / 2^L at
 the surface), Bulk level = L - 1, the given `Time step` (an upper bound:
@@ -34,7 +35,11 @@ def run_name(level, tau):
     return "L%d_tau%g" % (level, tau)
 
 
-def make_prm(text, level, tau, end_time, output_dir):
+def make_prm(text, level, tau, end_time, output_dir, settings):
+    for setting in settings:
+        entry, value = setting.split("=", 1)
+        path = entry.split("/")
+        text = set_entry(text, path[:-1], path[-1], value)
     text = set_entry(text, ["Mesh refinement"], "Maximum level", str(level))
     text = set_entry(text, ["Mesh refinement"], "Bulk level", str(level - 1))
     text = set_entry(text, ["Time"], "Time step", "%g" % tau)
@@ -60,6 +65,9 @@ def main():
     parser.add_argument("--output", default=os.path.join(
         ROOT, "doc", "bouncing_ball_study.md"))
     parser.add_argument("--no-run", action="store_true")
+    parser.add_argument("--set", action="append", default=[],
+                        metavar="SECTION/ENTRY=VALUE",
+                        help="change an entry of the scene in every run")
     args = parser.parse_args()
 
     os.makedirs(args.results_dir, exist_ok=True)
@@ -71,7 +79,7 @@ def main():
             name = run_name(level, tau)
             out = os.path.join(args.results_dir, name)
             if not args.no_run:
-                text = make_prm(base, level, tau, args.end_time, out)
+                text = make_prm(base, level, tau, args.end_time, out, args.set)
                 if not run_serial_scene(os.path.abspath(args.vefs),
                                         args.results_dir, name, text):
                     continue
@@ -90,7 +98,9 @@ def main():
         "surface; tau: the `Time step` bound (the CFL target shortens some "
         "steps). Heights in mm, times in ms; energy lost: 1 - E(lift-off) / "
         "E(0), all of it numerical (the material has no dissipation)."
-        % args.end_time,
+        % args.end_time + ("" if not args.set else
+                           " Changed entries: %s." % ", ".join(
+                               "`%s`" % x for x in args.set)),
         "",
         "| h [mm] | tau [ms] | steps | max cells | max flow dofs | lowest "
         "centroid [mm] | at [ms] | lift-off [ms] | rebound apex [mm] | at "
