@@ -313,7 +313,9 @@ namespace vefs
              "initial volume - inflow through the walls) / initial volume; "
              "floor_extent: largest x of liquid on the floor; "
              "wall_height: highest liquid on the x- wall; lower_x, "
-             "upper_x, ...: the box around the liquid.\n"
+             "upper_x, ...: the box around the liquid; centroid_velocity_x, "
+             "...: mean velocity of the liquid; total_energy: kinetic + "
+             "potential + elastic.\n"
           << column_header() << '\n';
         header_written = true;
       }
