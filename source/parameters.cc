@@ -373,11 +373,11 @@ namespace vefs
                         "cell's nodal values); gradient augmented (cubic "
                         "Hermite with the gradient of the level set carried "
                         "along the characteristics as well, Nave, Rosales & "
-                        "Seibold 2010; 8x smaller L1 error on the Rider-Kothe "
-                        "vortex at h = 1/128, but the default stays linear "
-                        "until its effect on flows with large steps is "
-                        "understood: broken_dam_2d_large_steps, height error "
-                        "at tau = 2, 0.038 -> 0.058). The other fields are "
+                        "Seibold 2010, with a four-stage trace of the feet; "
+                        "9x smaller L1 error on the Rider-Kothe vortex at "
+                        "h = 1/128, CFL 5; the default stays linear because "
+                        "the broken dam tests' outputs change, within their "
+                        "bounds, see doc/transport.md). The other fields are "
                         "always linear.");
       prm.declare_entry("Volume correction",
                         "true",
