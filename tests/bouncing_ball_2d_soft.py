@@ -11,7 +11,7 @@ References, exact for the continuous problem:
  - The body stays on the floor: the centroid stays above 0 and below its
    initial height.
 Printed with 2 significant digits: first contact time, lowest centroid
-height and its time, largest contact force, the energy left."""
+height and its time, largest contact force until then, the energy lost."""
 import os
 import sys
 
@@ -28,7 +28,10 @@ first = next(i for i in range(n) if F[i] > 0)
 print("first contact at t = %.2g s" % t[first])
 lowest = min(range(n), key=lambda i: y[i])
 print("lowest centroid height %.2g m at t = %.2g s (initial 0.15)" % (y[lowest], t[lowest]))
-print("largest contact force: %.2g N/m" % max(F))
+# Up to the lowest centroid: the test ends as a second impact begins,
+# whose first steps give a spike that is not a property of the first one.
+print("largest contact force until the lowest centroid: %.2g N/m"
+      % max(F[:lowest + 1]))
 print("B positive definite at every step: %s"
       % ("yes" if min(s["min_conformation_eigenvalue"]) > 0 else "NO"))
 print("max |volume change| below 1e-6: %s"
