@@ -32,6 +32,17 @@ namespace vefs
     }
 
     /**
+     * How much more stretch (tr B - d) a node outside the liquid may carry
+     * than the liquid nodes of its cells. Any finite factor ends the
+     * runaway; the outside nodes of the thin sheets of the soft ball
+     * (prm/bouncing_ball_2d_wide.prm) carry up to a few times the stretch
+     * of the liquid nodes: a factor of 1 spreads that ball to 1.38 m
+     * instead of 1.01 m, 3 to 1.20 m, 10 leaves it as without the bound
+     * (doc/bouncing_ball.md).
+     */
+    constexpr double stretch_bound_factor = 10;
+
+    /**
      * The nodes outside the liquid (psi > 0) of cells with liquid may not
      * be stretched far more than the liquid: where tr B - d at such a node
      * exceeds stretch_bound_factor times the largest tr B - d at the liquid
@@ -45,17 +56,6 @@ namespace vefs
      * a no-slip wall, doc/bouncing_ball.md). @p updated is nonzero at the
      * nodes the update has just set.
      */
-    /**
-     * How much more stretch (tr B - d) a node outside the liquid may carry
-     * than the liquid nodes of its cells. Any finite factor ends the
-     * runaway; the outside nodes of the thin sheets of the soft ball
-     * (prm/bouncing_ball_2d_wide.prm) carry up to a few times the stretch
-     * of the liquid nodes: a factor of 1 spreads that ball to 1.38 m
-     * instead of 1.01 m, 3 to 1.20 m, 10 leaves it as without the bound
-     * (doc/bouncing_ball.md).
-     */
-    constexpr double stretch_bound_factor = 10;
-
     template <int dim>
     void
     bound_stress_outside_liquid(
@@ -85,10 +85,11 @@ namespace vefs
             double in_liquid = 0;
             for (const unsigned int v : cell->vertex_indices())
               if (fields.fields(cell->vertex_dof_index(v, level_set)) <= 0)
-                in_liquid = std::max(
-                  in_liquid, conformation_trace([&](const unsigned int c) {
-                    return cell->vertex_dof_index(v, c);
-                  }));
+                in_liquid =
+                  std::max(in_liquid,
+                           conformation_trace([&](const unsigned int c) {
+                             return cell->vertex_dof_index(v, c);
+                           }));
             for (const unsigned int v : cell->vertex_indices())
               {
                 double &entry = largest(cell->vertex_dof_index(v, 0));
@@ -98,7 +99,8 @@ namespace vefs
       largest.compress(VectorOperation::max);
 
       for (const auto &node : fields.nodes())
-        if (updated(node.dofs[0]) > 0 && fields.fields(node.dofs[level_set]) > 0 &&
+        if (updated(node.dofs[0]) > 0 &&
+            fields.fields(node.dofs[level_set]) > 0 &&
             largest(node.dofs[0]) > 0)
           {
             const double now = conformation_trace(
