@@ -47,11 +47,11 @@ namespace vefs
       {
       }
 
-      /** Adds the cell's share to @p measure; returns the cell's volume of
-       * liquid. */
+      /** Adds the cell's free-surface area to @p surface_area; returns the
+       * cell's volume of liquid. */
       double
       add(const typename DoFHandler<dim>::active_cell_iterator &cell,
-          LiquidMeasure<dim>                                   &measure)
+          double                                               &surface_area)
       {
         const double width   = cell->minimum_vertex_distance() / n_sub_cells;
         double       lowest  = std::numeric_limits<double>::max();
@@ -69,12 +69,7 @@ namespace vefs
         if (lowest >= width)
           return 0;
         if (highest <= -width)
-          {
-            const double volume = cell->measure();
-            measure.volume += volume;
-            measure.first_moment += volume * cell->center();
-            return volume;
-          }
+          return cell->measure();
 
         fe_values.reinit(cell);
         const FEValuesExtractors::Scalar level_set(
@@ -84,14 +79,11 @@ namespace vefs
         double liquid = 0;
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
-            const double s  = -psi[q] / width;
-            const double dV = smooth_heaviside(s) * fe_values.JxW(q);
-            liquid += dV;
-            measure.first_moment += dV * fe_values.quadrature_point(q);
+            const double s = -psi[q] / width;
+            liquid += smooth_heaviside(s) * fe_values.JxW(q);
             const double delta = smooth_delta(s) / width * fe_values.JxW(q);
-            measure.surface_area += delta * grad_psi[q].norm();
+            surface_area += delta * grad_psi[q].norm();
           }
-        measure.volume += liquid;
         return liquid;
       }
 
@@ -102,26 +94,6 @@ namespace vefs
       std::vector<Tensor<1, dim>>   grad_psi;
     };
   } // namespace
-
-  template <int dim>
-  LiquidMeasure<dim>
-  measure_liquid(const TransportedFields<dim> &fields)
-  {
-    LiquidMeasure<dim>  measure;
-    CellIntegrator<dim> integrator(fields);
-    for (const auto &cell : fields.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        integrator.add(cell, measure);
-
-    const MPI_Comm comm =
-      fields.dof_handler.get_triangulation().get_communicator();
-    measure.volume       = Utilities::MPI::sum(measure.volume, comm);
-    measure.surface_area = Utilities::MPI::sum(measure.surface_area, comm);
-    for (unsigned int d = 0; d < dim; ++d)
-      measure.first_moment[d] =
-        Utilities::MPI::sum(measure.first_moment[d], comm);
-    return measure;
-  }
 
   template <int dim>
   double
@@ -147,21 +119,6 @@ namespace vefs
         shift;
     fields.finalize();
     return shift;
-  }
-
-  template <int dim>
-  Vector<float>
-  liquid_fractions(const TransportedFields<dim> &fields)
-  {
-    Vector<float> fractions(
-      fields.dof_handler.get_triangulation().n_active_cells());
-    CellIntegrator<dim> integrator(fields);
-    LiquidMeasure<dim>  unused;
-    for (const auto &cell : fields.dof_handler.active_cell_iterators())
-      if (!cell->is_artificial())
-        fractions[cell->active_cell_index()] =
-          integrator.add(cell, unused) / cell->measure();
-    return fractions;
   }
 
   template <int dim>
@@ -207,21 +164,22 @@ namespace vefs
   template <int dim>
   double
   interface_thickness(const TransportedFields<dim> &fields,
-                      const Vector<float>          &liquid_fraction,
-                      const double                  surface_area,
                       const double                  finest_cell_size)
   {
-    double mixed_volume = 0;
+    CellIntegrator<dim> integrator(fields);
+    double              surface_area = 0, mixed_volume = 0;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const float f = liquid_fraction[cell->active_cell_index()];
-          if (f > 0.01f && f < 0.99f)
+          const float fraction =
+            integrator.add(cell, surface_area) / cell->measure();
+          if (fraction > 0.01f && fraction < 0.99f)
             mixed_volume += cell->measure();
         }
-    const auto &triangulation = fields.dof_handler.get_triangulation();
-    mixed_volume =
-      Utilities::MPI::sum(mixed_volume, triangulation.get_communicator());
+    const MPI_Comm comm =
+      fields.dof_handler.get_triangulation().get_communicator();
+    mixed_volume = Utilities::MPI::sum(mixed_volume, comm);
+    surface_area = Utilities::MPI::sum(surface_area, comm);
     return mixed_volume / surface_area / finest_cell_size;
   }
 
@@ -267,20 +225,16 @@ namespace vefs
                                                          : extent;
   }
 
-#define VEFS_INSTANTIATE(dim)                                                    \
-  template LiquidMeasure<dim> measure_liquid(const TransportedFields<dim> &);    \
-  template double        correct_volume(TransportedFields<dim> &, const double); \
-  template Vector<float> liquid_fractions(const TransportedFields<dim> &);       \
-  template double        shape_error(const TransportedFields<dim> &,             \
-                                     const Function<dim> &);                     \
-  template double        interface_thickness(const TransportedFields<dim> &,     \
-                                             const Vector<float> &,              \
-                                             const double,                       \
-                                             const double);                      \
-  template double        liquid_extent_on_wall(const TransportedFields<dim> &,   \
-                                               const types::boundary_id,         \
-                                               const unsigned int,               \
-                                               const double);
+#define VEFS_INSTANTIATE(dim)                                             \
+  template double correct_volume(TransportedFields<dim> &, const double); \
+  template double shape_error(const TransportedFields<dim> &,             \
+                              const Function<dim> &);                     \
+  template double interface_thickness(const TransportedFields<dim> &,     \
+                                      const double);                      \
+  template double liquid_extent_on_wall(const TransportedFields<dim> &,   \
+                                        const types::boundary_id,         \
+                                        const unsigned int,               \
+                                        const double);
   VEFS_INSTANTIATE(2)
   VEFS_INSTANTIATE(3)
 #undef VEFS_INSTANTIATE

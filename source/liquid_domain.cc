@@ -139,6 +139,16 @@ namespace vefs
         return generator.get_inside_quadrature();
       }
 
+      /** The liquid fraction of the cut cell: inside()'s weights. */
+      double
+      inside_fraction() const
+      {
+        double fraction = 0;
+        for (const double w : inside().get_weights())
+          fraction += w;
+        return fraction;
+      }
+
       const NonMatching::ImmersedSurfaceQuadrature<dim> &
       surface() const
       {
@@ -181,10 +191,7 @@ namespace vefs
             {
               cut_index[index] = cut_cells.size();
               cut_cells.push_back({cutter.inside(), cutter.surface()});
-              double volume = 0;
-              for (const double w : cutter.inside().get_weights())
-                volume += w;
-              fraction[index] = volume;
+              fraction[index] = cutter.inside_fraction();
             }
         }
   }
@@ -206,15 +213,13 @@ namespace vefs
             {
               // On the reference cell dV/dshift = -int 1/|grad psi| over
               // the surface; the box maps volumes by its measure.
-              double inside = 0, derivative = 0;
-              for (const double w : cutter.inside().get_weights())
-                inside += w;
-              const auto  level_set = cutter.level_set();
-              const auto &surface   = cutter.surface();
+              double      derivative = 0;
+              const auto  level_set  = cutter.level_set();
+              const auto &surface    = cutter.surface();
               for (unsigned int q = 0; q < surface.size(); ++q)
                 derivative -= surface.weight(q) /
                               level_set.gradient(surface.point(q)).norm();
-              result.volume += inside * cell->measure();
+              result.volume += cutter.inside_fraction() * cell->measure();
               result.derivative += derivative * cell->measure();
             }
         }

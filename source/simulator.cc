@@ -586,10 +586,7 @@ namespace vefs
               ? shape_error(fields, *exact_final_level_set)
               : std::numeric_limits<double>::quiet_NaN();
           statistics.interface_thickness =
-            interface_thickness(fields,
-                                liquid_fractions(fields),
-                                measure_liquid(fields).surface_area,
-                                levels.finest_cell_size);
+            interface_thickness(fields, levels.finest_cell_size);
         }
       statistics.wall_time = wall_time_offset + wall_clock.wall_time();
     }

@@ -144,7 +144,8 @@ namespace vefs
     const FEValuesExtractors::Vector velocity(0);
     std::vector<Tensor<2, dim>> grad_u(GeometryInfo<dim>::vertices_per_cell);
     LiquidValues<dim>           liquid_values(domain);
-    StressUpdateReport          report;
+    std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
+    StressUpdateReport                                               report;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
@@ -160,14 +161,17 @@ namespace vefs
               // stretching, and grows by the strain bound in every step
               // (the beam held by a no-slip wall, doc/bouncing_ball.md).
               const BoxCellValues<dim> &values = liquid_values.reinit(cell);
-              Tensor<2, dim>            mean;
-              double                    volume = 0;
+              for (const unsigned int v : cell->vertex_indices())
+                for (unsigned int d = 0; d < dim; ++d)
+                  vertex_u[v][d] = fields.fields(cell->vertex_dof_index(v, d));
+              Tensor<2, dim> mean;
+              double         volume = 0;
               for (unsigned int q = 0; q < values.size(); ++q)
                 {
                   for (const unsigned int v : cell->vertex_indices())
                     for (unsigned int d = 0; d < dim; ++d)
-                      mean[d] += fields.fields(cell->vertex_dof_index(v, d)) *
-                                 values.JxW[q] * values.gradient[q][v];
+                      mean[d] +=
+                        vertex_u[v][d] * values.JxW[q] * values.gradient[q][v];
                   volume += values.JxW[q];
                 }
               if (volume > 0)

@@ -1,33 +1,10 @@
 #ifndef vefs_free_surface_h
 #define vefs_free_surface_h
 
-#include <deal.II/lac/vector.h>
-
 #include <vefs/transported_fields.h>
 
 namespace vefs
 {
-  /**
-   * The liquid indicator phi = H(-psi), integrated per cell with a
-   * sub-cell rule and a Heaviside smoothed over one sub-cell: the
-   * transport's view of the surface, for its thickness (interface_thickness).
-   * The volume of the statistics and of the volume correction is the sharp
-   * one of the flow step (sharp_liquid_volume()).
-   */
-  template <int dim>
-  struct LiquidMeasure
-  {
-    double         volume = 0;
-    Tensor<1, dim> first_moment;
-    /** Area (length in 2D) of the free surface, int delta(psi) |grad psi|. */
-    double surface_area = 0;
-  };
-
-  /** Smoothed liquid volume, its first moment and the surface area. */
-  template <int dim>
-  LiquidMeasure<dim>
-  measure_liquid(const TransportedFields<dim> &fields);
-
   /**
    * Restore the liquid volume @p target, as the flow step measures it
    * (sharp_liquid_volume()), by adding one constant to psi,
@@ -37,14 +14,6 @@ namespace vefs
   template <int dim>
   double
   correct_volume(TransportedFields<dim> &fields, const double target);
-
-  /**
-   * Liquid volume fraction of every locally owned and ghost cell, indexed by
-   * active_cell_index(), from the smoothed indicator of measure_liquid().
-   */
-  template <int dim>
-  Vector<float>
-  liquid_fractions(const TransportedFields<dim> &fields);
 
   /**
    * L1 error of the liquid region, int |phi - phi_exact|, with phi_exact the
@@ -58,16 +27,16 @@ namespace vefs
 
   /**
    * Thickness of the free surface in the transport's smoothed indicator
-   * (the fractions of liquid_fractions()): the volume of the partly filled
-   * cells (0.01 < fraction < 0.99) per unit @p surface_area
-   * (from measure_liquid(), so that the surface is not measured twice),
-   * divided by the finest cell size. About one for a sharp surface.
+   * phi = H(-psi), integrated per cell with a sub-cell rule and a Heaviside
+   * smoothed over one sub-cell: the volume of the partly filled cells
+   * (0.01 < fraction < 0.99) per unit surface area (int delta(psi)
+   * |grad psi|), divided by the finest cell size. About one for a sharp
+   * surface. (The volume of the statistics and of the volume correction is
+   * the sharp one of the flow step, sharp_liquid_volume().)
    */
   template <int dim>
   double
   interface_thickness(const TransportedFields<dim> &fields,
-                      const Vector<float>          &liquid_fraction,
-                      const double                  surface_area,
                       const double                  finest_cell_size);
 
   /** Largest coordinate @p coordinate of the liquid on wall @p boundary_id. */

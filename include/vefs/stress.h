@@ -9,19 +9,6 @@
 
 namespace vefs
 {
-  /**
-   * Step 4 of the design (section 2): the new stress sigma^{n+1} at the
-   * nodes of liquid cells, from the advected stress sigma* that @p fields
-   * holds there and the new velocity (already copied into @p fields). Each
-   * liquid cell carries the stress of its vertices by a velocity gradient:
-   * a full cell by its Q1 gradient at the vertex, a cut cell at all its
-   * vertices by the mean gradient over its liquid part (the gradient the
-   * flow step's stress term sees). The nodal value is the cell-volume
-   * weighted average of these, so that a liquid at rest keeps its stress
-   * exactly. Other nodes keep their values (the extension overwrites
-   * them). Returns the largest velocity gradient it met and how
-   * often the strain limiter acted.
-   */
   /** What the stress update reports of the velocity gradient it used. */
   struct StressUpdateReport
   {
@@ -34,6 +21,20 @@ namespace vefs
     unsigned int strain_limited_points = 0;
   };
 
+  /**
+   * Step 4 of the design (section 2): the new stress sigma^{n+1} at the
+   * nodes of liquid cells, from the advected stress sigma* that @p fields
+   * holds there and the new velocity (already copied into @p fields). Each
+   * liquid cell carries the stress of its vertices by a velocity gradient:
+   * a full cell by its Q1 gradient at the vertex, a cut cell at all its
+   * vertices by the mean gradient over its liquid part (the gradient the
+   * flow step's stress term sees). The nodal value is the cell-volume
+   * weighted average of these, so that a liquid at rest keeps its stress
+   * exactly. A node outside the liquid may then carry at most a bounded
+   * multiple of the stretch of its cells' liquid nodes (stress.cc). Other
+   * nodes keep their values (the extension overwrites them). Returns the
+   * largest velocity gradient it met and how often the strain limiter acted.
+   */
   template <int dim>
   StressUpdateReport
   update_stress(TransportedFields<dim>  &fields,
