@@ -306,7 +306,12 @@ namespace vefs
                         Patterns::Anything(),
                         "muParser expression in x, y, (z): the liquid is "
                         "where it is negative. It should be close to a "
-                        "signed distance (m) near its zero level.");
+                        "signed distance (m) near its zero level, and "
+                        "smooth: with the gradient augmented transport and "
+                        "no redistancing, a kink (the center of "
+                        "sqrt(r^2) - R) that the flow carries near the "
+                        "surface costs accuracy; (r^2 - R^2) / (2 R) has "
+                        "the same zero level and none.");
       prm.declare_entry("Velocity",
                         "0; 0",
                         Patterns::Anything(),
@@ -346,7 +351,9 @@ namespace vefs
                         "surface, in finest cells. The band is widened to "
                         "CFL + 2 cells (the target CFL, or the CFL number "
                         "of the last step if larger) so that the surface "
-                        "cannot leave it within a step.");
+                        "cannot leave it within a step. Distances are "
+                        "estimated as psi / |grad psi| where the level set "
+                        "is steeper than a distance.");
       prm.declare_entry("Extension layers",
                         "4",
                         Patterns::Integer(1, 100),
@@ -359,7 +366,11 @@ namespace vefs
                         Patterns::Integer(0),
                         "Every this many steps, make the level set a signed "
                         "distance again away from the surface (the surface "
-                        "itself does not move); 0: never.");
+                        "itself does not move); 0: never. The distance has "
+                        "kinks (between two surfaces) that the cubic "
+                        "interpolations smear: with the gradient augmented "
+                        "level set, which carries its own gradient, 0 is "
+                        "more accurate for transport.");
       prm.declare_entry("Level set interpolation",
                         "linear",
                         Patterns::Selection(

@@ -171,9 +171,19 @@ namespace vefs
     triangulation.refine_global(parameters.min_level);
     fields.setup_dofs();
     // Refine toward the initial surface, evaluating it exactly on each mesh.
-    do
-      fields.interpolate(*level_set, *velocity, stress.get());
-    while (adapt_mesh(triangulation, fields, levels, 1));
+    // A level set whose slope varies may make a cell and its children want
+    // different levels: the cycles are bounded.
+    for (unsigned int cycle = 0;; ++cycle)
+      {
+        fields.interpolate(*level_set, *velocity, stress.get());
+        if (cycle == parameters.max_level ||
+            !adapt_mesh(triangulation,
+                        fields,
+                        levels,
+                        1,
+                        LevelSetInterpolation::linear))
+          break;
+      }
     if (prescribed_velocity)
       {
         prescribed_velocity->set_time(0);
@@ -456,7 +466,11 @@ namespace vefs
         {
           TimerOutput::Scope scope(timer, "2 mesh adaptation");
           levels.expect_cfl(expected_cfl);
-          adapt_mesh(triangulation, fields, levels, 1);
+          adapt_mesh(triangulation,
+                     fields,
+                     levels,
+                     1,
+                     parameters.level_set_interpolation);
           domain = LiquidDomain<dim>(fields);
         }
 

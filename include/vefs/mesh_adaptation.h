@@ -26,8 +26,16 @@ namespace vefs
     void
     expect_cfl(const double cfl);
 
+    /**
+     * The level of a cell whose nodal level set values lie in [@p psi_lowest,
+     * @p psi_highest] and whose level set slope is @p slope. Where psi has
+     * been stretched (slope above 1) psi underestimates the distance to the
+     * surface by that factor, and the band is measured in psi / slope.
+     */
     unsigned int
-    target_level(const double psi_lowest, const double psi_highest) const;
+    target_level(const double psi_lowest,
+                 const double psi_highest,
+                 const double slope) const;
 
     /** Size of the finest cells (their shortest edge). */
     double finest_cell_size;
@@ -43,13 +51,16 @@ namespace vefs
    * at most @p max_cycles times (each changes a cell by one level) or until
    * the mesh stops changing. Returns true if it changed. In the time loop
    * one cycle a step suffices: the band is wider than the surface moves.
+   * Unless @p interpolation is linear, the level set at new vertices is the
+   * cubic one of the refined cell, not the Q1 one.
    */
   template <int dim>
   bool
   adapt_mesh(parallel::distributed::Triangulation<dim> &triangulation,
              TransportedFields<dim>                    &fields,
              const MeshLevels                          &levels,
-             const unsigned int                         max_cycles);
+             const unsigned int                         max_cycles,
+             const LevelSetInterpolation                interpolation);
 } // namespace vefs
 
 #endif
