@@ -31,6 +31,19 @@ namespace vefs
                                    const Faces              faces)
   {
     using Location = typename LiquidDomain<dim>::Location;
+    if (matrices_wanted && all_faces_kept)
+      {
+        for (const KeptFace &face : kept_faces)
+          if (faces == Faces::all || face.next_to_walls)
+            {
+              recall_face(face);
+              action(matrix, schur, face.dofs);
+            }
+        return;
+      }
+    const bool keep = matrices_wanted && faces == Faces::all;
+    if (keep)
+      kept_faces.clear();
     std::vector<types::global_dof_index> dofs, cell_dofs, neighbor_dofs;
     const auto                           visit = [&](const auto        &cell,
                            const unsigned int face,
@@ -83,6 +96,9 @@ namespace vefs
               face_weights(neighbor->minimum_vertex_distance(), 0.5)
                                     : face_weights(cell->minimum_vertex_distance(), 1.);
       compute(weights);
+      if (keep)
+        keep_face(interface_values.get_interface_dof_indices(),
+                  cell->at_boundary() || neighbor->at_boundary());
       action(matrix, schur, interface_values.get_interface_dof_indices());
     };
 
@@ -121,6 +137,43 @@ namespace vefs
                     cell->neighbor(f),
                     cell->neighbor_of_neighbor(f),
                     numbers::invalid_unsigned_int);
+          }
+    if (keep)
+      all_faces_kept = true;
+  }
+
+  template <int dim>
+  void
+  GhostPenalty<dim>::keep_face(const std::vector<types::global_dof_index> &dofs,
+                               const bool next_to_walls)
+  {
+    KeptFace face{dofs, component, {}, {}, next_to_walls};
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      for (unsigned int j = 0; j < dofs.size(); ++j)
+        if (component[i] == component[j])
+          {
+            face.matrix.push_back(matrix(i, j));
+            if (component[i] == dim)
+              face.schur.push_back(schur(i, j));
+          }
+    kept_faces.push_back(std::move(face));
+  }
+
+  template <int dim>
+  void
+  GhostPenalty<dim>::recall_face(const KeptFace &face)
+  {
+    const unsigned int n = face.dofs.size();
+    matrix.reinit(n, n);
+    schur.reinit(n, n);
+    unsigned int next = 0, next_schur = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        if (face.component[i] == face.component[j])
+          {
+            matrix(i, j) = face.matrix[next++];
+            if (face.component[i] == dim)
+              schur(i, j) = face.schur[next_schur++];
           }
   }
 

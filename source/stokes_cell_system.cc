@@ -18,6 +18,11 @@ namespace vefs
     , mu(rheology.effective_viscosity(tau))
     , kept(rheology.stress_factor(tau))
     , liquid_values(domain)
+    , face_values(flow_fe,
+                  QGauss<dim - 1>(2),
+                  update_values | update_JxW_values)
+    , kept_index(fields.dof_handler.get_triangulation().n_active_cells(),
+                 numbers::invalid_unsigned_int)
   {
     for (unsigned int d = 0; d < dim; ++d)
       gravity[d] = parameters.gravity[d];
@@ -40,6 +45,8 @@ namespace vefs
         component[i] = flow_fe.system_to_component_index(i).first;
         // FE_Q(1): the dof of a base element is that of the vertex.
         vertex[i] = flow_fe.system_to_component_index(i).second;
+        if (component[i] == dim)
+          pressure_dofs.push_back(i);
       }
     stretching.resize(n_dofs);
     grad_u.resize(n_dofs);
@@ -53,6 +60,52 @@ namespace vefs
   template <int dim>
   void
   StokesCellSystem<dim>::compute(
+    const typename DoFHandler<dim>::active_cell_iterator &cell)
+  {
+    const unsigned int index = kept_index[cell->active_cell_index()];
+    if (index != numbers::invalid_unsigned_int)
+      recall(kept_cells[index]);
+    else
+      {
+        compute_anew(cell);
+        keep(cell);
+      }
+  }
+
+  template <int dim>
+  void
+  StokesCellSystem<dim>::keep(
+    const typename DoFHandler<dim>::active_cell_iterator &cell)
+  {
+    kept_index[cell->active_cell_index()] = kept_cells.size();
+    KeptCell kept_cell{matrix,
+                       rhs,
+                       FullMatrix<double>(pressure_dofs.size()),
+                       pressure_mass,
+                       schur_weight};
+    kept_cell.pressure_schur.extract_submatrix_from(schur,
+                                                    pressure_dofs,
+                                                    pressure_dofs);
+    kept_cells.push_back(std::move(kept_cell));
+  }
+
+  template <int dim>
+  void
+  StokesCellSystem<dim>::recall(const KeptCell &kept_cell)
+  {
+    matrix        = kept_cell.matrix;
+    rhs           = kept_cell.rhs;
+    pressure_mass = kept_cell.pressure_mass;
+    schur_weight  = kept_cell.schur_weight;
+    schur         = 0;
+    kept_cell.pressure_schur.scatter_matrix_to(pressure_dofs,
+                                               pressure_dofs,
+                                               schur);
+  }
+
+  template <int dim>
+  void
+  StokesCellSystem<dim>::compute_anew(
     const typename DoFHandler<dim>::active_cell_iterator &cell)
   {
     const bool         with_stress = rheology.has_stress();
@@ -161,6 +214,30 @@ namespace vefs
               rhs(i) -= kept * sigma_star[q] * eps_u[i] * JxW;
           }
       }
+    add_open_wall_terms(cell, h);
+  }
+
+  template <int dim>
+  void
+  StokesCellSystem<dim>::add_open_wall_terms(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const double                                          h)
+  {
+    const FEValuesExtractors::Scalar pressure(dim);
+    const unsigned int               n_dofs = matrix.m();
+    for (const unsigned int f : cell->face_indices())
+      if (cell->at_boundary(f) &&
+          parameters.wall_type[cell->face(f)->boundary_id()] == WallType::open)
+        {
+          face_values.reinit(cell, f);
+          for (const unsigned int q : face_values.quadrature_point_indices())
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                schur(i, j) += surface_penalty * schur_weight / h *
+                               face_values[pressure].value(i, q) *
+                               face_values[pressure].value(j, q) *
+                               face_values.JxW(q);
+        }
   }
 
   template <int dim>

@@ -115,22 +115,12 @@ namespace vefs
   }
 
   template <int dim>
-  bool
-  StokesStep<dim>::is_open_wall(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    const unsigned int                                    face) const
-  {
-    return cell->at_boundary(face) &&
-           parameters.wall_type[cell->face(face)->boundary_id()] ==
-             WallType::open;
-  }
-
-  template <int dim>
   void
   StokesStep<dim>::setup(const LiquidDomain<dim> &domain, const double new_time)
   {
     time         = new_time;
     this->domain = &domain;
+    step_systems.reset();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         cell->set_active_fe_index(domain.has_liquid(cell) ? liquid_index
@@ -379,43 +369,15 @@ namespace vefs
     system_rhs           = 0;
     lumped_pressure_mass = 0;
 
-    StokesCellSystem<dim>            local(parameters,
-                                rheology,
-                                fe_collection[liquid_index],
-                                fields,
-                                *domain,
-                                tau);
-    const QGauss<dim - 1>            face_quadrature(2);
-    FEFaceValues<dim>                face_values(fe_collection[liquid_index],
-                                  face_quadrature,
-                                  update_values | update_JxW_values);
-    const FEValuesExtractors::Scalar pressure(dim);
-    const unsigned int               dofs_per_cell =
-      fe_collection[liquid_index].n_dofs_per_cell();
-    std::vector<types::global_dof_index> dof_indices(dofs_per_cell);
+    StepSystems                         &systems = systems_of_step(fields, tau);
+    StokesCellSystem<dim>               &local   = systems.cells;
+    std::vector<types::global_dof_index> dof_indices(
+      fe_collection[liquid_index].n_dofs_per_cell());
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index)
         {
           local.compute(cell);
-          const double h = cell->minimum_vertex_distance();
-
-          // In the Schur preconditioner the pressure vanishes on an open
-          // wall as on the free surface.
-          for (const unsigned int f : cell->face_indices())
-            if (is_open_wall(cell, f))
-              {
-                face_values.reinit(cell, f);
-                for (const unsigned int q :
-                     face_values.quadrature_point_indices())
-                  for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                    for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                      local.schur(i, j) +=
-                        local.surface_penalty * local.schur_weight / h *
-                        face_values[pressure].value(i, q) *
-                        face_values[pressure].value(j, q) * face_values.JxW(q);
-              }
-
           cell->get_dof_indices(dof_indices);
           constraints.distribute_local_to_global(local.matrix,
                                                  local.rhs,
@@ -430,18 +392,14 @@ namespace vefs
                                                  lumped_pressure_mass);
         }
 
-    GhostPenalty<dim> ghost_penalty(parameters,
-                                    rheology,
-                                    fe_collection[liquid_index],
-                                    tau);
-    Vector<double>    zero_rhs;
+    Vector<double> zero_rhs;
     // The Schur pattern holds the pressure unknowns (after the velocity
     // block) only.
     const types::global_dof_index        n_u = owned_partitioning[0].size();
     std::vector<types::global_dof_index> pressure_dofs;
     std::vector<unsigned int>            pressure_rows;
     FullMatrix<double>                   pressure_schur;
-    ghost_penalty.for_each_face(
+    systems.faces.for_each_face(
       dof_handler,
       *domain,
       true,
@@ -578,25 +536,39 @@ namespace vefs
   {
     if (contact.empty())
       return false;
-    StokesCellSystem<dim> local(parameters,
-                                rheology,
-                                fe_collection[liquid_index],
-                                fields,
-                                *domain,
-                                tau);
-    GhostPenalty<dim>     ghost_penalty(parameters,
-                                    rheology,
-                                    fe_collection[liquid_index],
-                                    tau);
+    StepSystems &systems = systems_of_step(fields, tau);
     if (!contact.update(dof_handler,
                         *domain,
                         solution,
-                        local,
-                        ghost_penalty,
+                        systems.cells,
+                        systems.faces,
                         liquid_index))
       return false;
     make_constraints(constraints, true);
     return true;
+  }
+
+  template <int dim>
+  typename StokesStep<dim>::StepSystems &
+  StokesStep<dim>::systems_of_step(const TransportedFields<dim> &fields,
+                                   const double                  tau)
+  {
+    Assert(!step_systems || step_systems->tau == tau,
+           ExcMessage("One time step per setup()."));
+    if (!step_systems)
+      step_systems.reset(
+        new StepSystems{StokesCellSystem<dim>(parameters,
+                                              rheology,
+                                              fe_collection[liquid_index],
+                                              fields,
+                                              *domain,
+                                              tau),
+                        GhostPenalty<dim>(parameters,
+                                          rheology,
+                                          fe_collection[liquid_index],
+                                          tau),
+                        tau});
+    return *step_systems;
   }
 
   template <int dim>

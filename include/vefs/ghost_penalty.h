@@ -59,6 +59,11 @@ namespace vefs
      * the dofs of that component on both cells, sorted: for the sparsity
      * pattern (the penalty couples each component with itself only).
      * @p faces may restrict the visit to faces next to the walls.
+     *
+     * The matrices of a first visit of all faces are kept, and later visits
+     * with matrices replay them: one object serves the assembly and the
+     * contact iterations of one time step (same mesh, liquid domain and
+     * tau).
      */
     void
     for_each_face(const DoFHandler<dim>   &dof_handler,
@@ -92,6 +97,27 @@ namespace vefs
     void
     compute(const Weights &weights);
 
+    /**
+     * A face's matrices as compute() made them: row by row the entries
+     * that couple a component with itself (the others are zero), and of the
+     * Schur matrix those of the pressure.
+     */
+    struct KeptFace
+    {
+      std::vector<types::global_dof_index> dofs;
+      std::vector<unsigned int>            component;
+      std::vector<double>                  matrix;
+      std::vector<double>                  schur;
+      bool                                 next_to_walls;
+    };
+
+    void
+    keep_face(const std::vector<types::global_dof_index> &dofs,
+              const bool                                  next_to_walls);
+
+    void
+    recall_face(const KeptFace &face);
+
     const Parameters         &parameters;
     const double              tau;
     const double              mu;
@@ -101,6 +127,8 @@ namespace vefs
     FullMatrix<double>        schur;
     std::vector<unsigned int> component;
     std::vector<double>       jump;
+    std::vector<KeptFace>     kept_faces;
+    bool                      all_faces_kept = false;
   };
 } // namespace vefs
 

@@ -28,6 +28,9 @@ namespace vefs
    * surface moves by tau u.n within the step. The rheology supplies mu, k and
    * the advected stress terms. Used by the assembly and by the reactions of
    * contact walls.
+   *
+   * The object keeps what it computed: the contact iterations of a step
+   * assemble the same cells again with other constraints only.
    */
   template <int dim>
   class StokesCellSystem
@@ -40,7 +43,10 @@ namespace vefs
                      const LiquidDomain<dim>      &domain,
                      const double                  tau);
 
-    /** Compute the members below for the @p cell, which holds liquid. */
+    /**
+     * Compute the members below for the @p cell, which holds liquid, or
+     * recall them if this object computed them before.
+     */
     void
     compute(const typename DoFHandler<dim>::active_cell_iterator &cell);
 
@@ -56,6 +62,37 @@ namespace vefs
     static constexpr double surface_penalty = 10;
 
   private:
+    /**
+     * What compute() keeps of a cell; of the Schur matrix the pressure
+     * block, the rest being zero.
+     */
+    struct KeptCell
+    {
+      FullMatrix<double> matrix;
+      Vector<double>     rhs;
+      FullMatrix<double> pressure_schur;
+      Vector<double>     pressure_mass;
+      double             schur_weight;
+    };
+
+    void
+    compute_anew(const typename DoFHandler<dim>::active_cell_iterator &cell);
+
+    void
+    keep(const typename DoFHandler<dim>::active_cell_iterator &cell);
+
+    void
+    recall(const KeptCell &kept_cell);
+
+    /**
+     * In the Schur preconditioner the pressure vanishes on an open wall as
+     * on the free surface.
+     */
+    void
+    add_open_wall_terms(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const double                                          h);
+
     /**
      * u*, sigma* and div sigma* at the quadrature points of @p values from
      * the vertex values of the transported fields on @p transport_cell.
@@ -87,6 +124,14 @@ namespace vefs
 
     LiquidValues<dim>     liquid_values;
     BoxSurfaceValues<dim> surface_values;
+
+    FEFaceValues<dim> face_values;
+
+    /** Kept cells, and their place there by active cell index. */
+    std::vector<KeptCell>     kept_cells;
+    std::vector<unsigned int> kept_index;
+    /** The dofs of the pressure, in the cell's order. */
+    std::vector<unsigned int> pressure_dofs;
 
     std::vector<unsigned int> component;
     /** The vertex of each dof (FE_Q(1) in every component). */

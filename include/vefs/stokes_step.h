@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <vefs/contact_walls.h>
+#include <vefs/ghost_penalty.h>
 #include <vefs/liquid_domain.h>
 #include <vefs/parameters.h>
 #include <vefs/rheology.h>
@@ -145,11 +146,6 @@ namespace vefs
     void
     make_matrices();
 
-    /** A face of a cell on an open wall. */
-    bool
-    is_open_wall(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                 const unsigned int face) const;
-
     const Parameters                             &parameters;
     const MPI_Comm                                comm;
     hp::FECollection<dim>                         fe_collection;
@@ -171,6 +167,24 @@ namespace vefs
     double time = 0;
     /** The liquid of the step being solved, from setup(). */
     const LiquidDomain<dim> *domain = nullptr;
+
+    /**
+     * The cell and face terms of a step, which keep what they computed: the
+     * fields, the liquid domain and tau stay the same through the contact
+     * iterations, only the constraints change.
+     */
+    struct StepSystems
+    {
+      StokesCellSystem<dim> cells;
+      GhostPenalty<dim>     faces;
+      double                tau;
+    };
+
+    /** Those of the step, made by its first assembly after setup(). */
+    StepSystems &
+    systems_of_step(const TransportedFields<dim> &fields, const double tau);
+
+    std::unique_ptr<StepSystems> step_systems;
   };
 } // namespace vefs
 
