@@ -77,10 +77,9 @@ namespace vefs
      * the liquid shrinks by O(h^2) at each refinement (vortex, h = 1/128,
      * CFL 1, no volume correction: 8.9 % of the liquid lost with the Q1
      * values, 5.2 % with the cubic ones, 1.7 % gained on a uniform mesh).
-     * Before the mesh changes, each cell to be refined packs
-     * the value and gradient of its Hermite interpolant at the vertices of
-     * its children (a lattice of 3^dim points); they are written after the
-     * transfer.
+     * Before the mesh changes, each cell to be refined packs the value and
+     * gradient of its Hermite interpolant at the vertices of its children
+     * (a lattice of 3^dim points); they are written after the transfer.
      */
     template <int dim>
     class HermiteRefinement
