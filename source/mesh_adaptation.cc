@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/distributed/solution_transfer.h>
 
+#include <vefs/box_q1_values.h>
 #include <vefs/level_set_hermite.h>
 #include <vefs/mesh_adaptation.h>
 
@@ -49,8 +50,7 @@ namespace vefs
   {
     /**
      * The length of the gradient of the Q1 level set at the center of an
-     * axis-parallel @p cell: per direction, the difference of the means of
-     * the vertex values on its two faces over the cell's extent.
+     * axis-parallel @p cell.
      */
     template <int dim>
     double
@@ -58,15 +58,15 @@ namespace vefs
                     const typename DoFHandler<dim>::active_cell_iterator &cell)
     {
       constexpr unsigned int c = TransportedFields<dim>::level_set_component;
-      Tensor<1, dim>         gradient;
-      for (const unsigned int v : cell->vertex_indices())
-        {
-          const double psi = fields.fields(cell->vertex_dof_index(v, c));
-          for (unsigned int d = 0; d < dim; ++d)
-            gradient[d] += ((v >> d) & 1 ? psi : -psi);
-        }
+      Point<dim>             center;
       for (unsigned int d = 0; d < dim; ++d)
-        gradient[d] /= (cell->n_vertices() / 2) * cell->extent_in_direction(d);
+        center[d] = 0.5;
+      const Tensor<1, dim> extent = internal::box_extent<dim>(cell);
+      Tensor<1, dim>       gradient;
+      for (const unsigned int v : cell->vertex_indices())
+        for (unsigned int d = 0; d < dim; ++d)
+          gradient[d] += fields.fields(cell->vertex_dof_index(v, c)) *
+                         internal::q1_shape(v, center, d) / extent[d];
       return gradient.norm();
     }
 
