@@ -19,7 +19,7 @@ namespace vefs
     namespace fs = std::filesystem;
 
     /** First line of the state file; the number changes with its format. */
-    const std::string magic = "vefs checkpoint 1";
+    const std::string magic = "vefs checkpoint 2";
 
     /** Exactly, as a C99 hexadecimal float. */
     std::string
@@ -211,7 +211,13 @@ namespace vefs
       parallel::distributed::
         SolutionTransfer<dim, typename TransportedFields<dim>::VectorType>
           transfer(fields.dof_handler);
-      transfer.prepare_for_serialization(fields.fields);
+      // The level set gradient as well: the gradient augmented transport
+      // carries it (format 1 did not save it, and resumed such runs
+      // differently).
+      transfer.prepare_for_serialization(
+        std::vector<const typename TransportedFields<dim>::VectorType *>{
+          &fields.fields,
+          &fields.level_set_gradient});
       triangulation.save(next + "/mesh");
     }
     // The files of every rank are complete before rank 0 lists them.
@@ -341,14 +347,20 @@ namespace vefs
     // The files passed their checksums: p4est reads a sound forest.
     triangulation.load(directory + "/mesh");
     fields.setup_dofs();
-    typename TransportedFields<dim>::VectorType loaded;
-    fields.initialize_vector(loaded);
-    loaded.zero_out_ghost_values();
+    std::vector<typename TransportedFields<dim>::VectorType>   loaded(2);
+    std::vector<typename TransportedFields<dim>::VectorType *> targets;
+    for (auto &vector : loaded)
+      {
+        fields.initialize_vector(vector);
+        vector.zero_out_ghost_values();
+        targets.push_back(&vector);
+      }
     parallel::distributed::
       SolutionTransfer<dim, typename TransportedFields<dim>::VectorType>
         transfer(fields.dof_handler);
-    transfer.deserialize(loaded);
-    fields.fields = loaded;
+    transfer.deserialize(targets);
+    fields.fields             = loaded[0];
+    fields.level_set_gradient = loaded[1];
     fields.finalize();
     return state;
   }
