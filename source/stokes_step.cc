@@ -121,6 +121,9 @@ namespace vefs
     time         = new_time;
     this->domain = &domain;
     step_systems.reset();
+    velocity_amg.reset();
+    laplace_amg.reset();
+    solved_in_step = false;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         cell->set_active_fe_index(domain.has_liquid(cell) ? liquid_index
@@ -434,8 +437,8 @@ namespace vefs
   }
 
   template <int dim>
-  unsigned int
-  StokesStep<dim>::solve()
+  void
+  StokesStep<dim>::build_preconditioners()
   {
     // AMG for the velocity block, told about the constant modes (one per
     // velocity component) so that aggregation treats them as near-kernel.
@@ -460,19 +463,27 @@ namespace vefs
               }
           }
     }
-    TrilinosWrappers::PreconditionAMG                 velocity_amg;
     TrilinosWrappers::PreconditionAMG::AdditionalData velocity_data;
     velocity_data.elliptic              = true;
     velocity_data.higher_order_elements = false;
     velocity_data.smoother_sweeps       = parameters.amg_smoother_sweeps;
     velocity_data.aggregation_threshold = 0.02;
     velocity_data.constant_modes        = constant_modes;
-    velocity_amg.initialize(system_matrix.block(0, 0), velocity_data);
+    velocity_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    velocity_amg->initialize(system_matrix.block(0, 0), velocity_data);
 
-    TrilinosWrappers::PreconditionAMG                 laplace_amg;
     TrilinosWrappers::PreconditionAMG::AdditionalData laplace_data;
     laplace_data.elliptic = true;
-    laplace_amg.initialize(schur_matrix.block(1, 1), laplace_data);
+    laplace_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    laplace_amg->initialize(schur_matrix.block(1, 1), laplace_data);
+  }
+
+  template <int dim>
+  unsigned int
+  StokesStep<dim>::solve()
+  {
+    if (!velocity_amg)
+      build_preconditioners();
 
     TrilinosWrappers::MPI::Vector scaled_inverse_mass(
       lumped_pressure_mass.block(1));
@@ -484,11 +495,20 @@ namespace vefs
     scaled_inverse_mass.compress(VectorOperation::insert);
 
     const BlockPreconditioner preconditioner(system_matrix,
-                                             velocity_amg,
-                                             laplace_amg,
+                                             *velocity_amg,
+                                             *laplace_amg,
                                              scaled_inverse_mass);
 
+    // A contact iteration starts from the solve before it, whose contact set
+    // differs in a few unknowns only.
     BlockVector distributed(owned_partitioning, comm);
+    if (solved_in_step)
+      {
+        for (unsigned int b = 0; b < distributed.n_blocks(); ++b)
+          for (const auto i : distributed.block(b).locally_owned_elements())
+            distributed.block(b)(i) = solution.block(b)(i);
+        distributed.compress(VectorOperation::insert);
+      }
     constraints.set_zero(distributed);
     const double rhs_norm = system_rhs.l2_norm();
     // An overflowing right-hand side would make the tolerance infinite and
@@ -525,7 +545,8 @@ namespace vefs
       throw SolverError("the Stokes solution is not finite; check "
                         "'Gravity', the 'Walls' velocities and 'Time/Time "
                         "step'");
-    solution = distributed;
+    solution       = distributed;
+    solved_in_step = true;
     return control.last_step();
   }
 

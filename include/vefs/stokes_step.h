@@ -8,6 +8,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/trilinos_precondition.h>
 
 #include <vefs/contact_walls.h>
 #include <vefs/ghost_penalty.h>
@@ -185,6 +186,25 @@ namespace vefs
     systems_of_step(const TransportedFields<dim> &fields, const double tau);
 
     std::unique_ptr<StepSystems> step_systems;
+
+    /**
+     * The AMG hierarchies of the step, built by its first solve. The contact
+     * iterations change only the rows of the velocity block that the
+     * contact set constrains, so the first hierarchy still preconditions
+     * the later solves (FGMRES allows that); the pressure Laplacian does not
+     * change at all.
+     */
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> velocity_amg;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> laplace_amg;
+    /**
+     * Whether @p solution holds a solve of this step: the next contact
+     * iteration starts from it.
+     */
+    bool solved_in_step = false;
+
+    /** Build the AMG hierarchies of the step from the current matrices. */
+    void
+    build_preconditioners();
   };
 } // namespace vefs
 
