@@ -558,7 +558,21 @@ namespace vefs
       const unsigned int layers =
         std::max<unsigned int>(parameters.extension_layers,
                                std::ceil(expected_cfl) + 2);
-      extend_flow_fields(fields, known, layers);
+      if (parameters.extend_outside_velocity)
+        {
+          // The stress keeps its values at all vertices of the cut cells,
+          // the velocity at the liquid ones only.
+          auto known_stress = known;
+          unflag_nodes_outside_liquid(fields, known);
+          extend_flow_fields(fields, known, layers, velocity_components<dim>());
+          if (fields.has_stress())
+            extend_flow_fields(fields,
+                               known_stress,
+                               layers,
+                               stress_components(fields));
+        }
+      else
+        extend_flow_fields(fields, known, layers, flow_components(fields));
     }
   }
 

@@ -138,11 +138,16 @@ namespace vefs
     /** Empty: zero initial stress. */
     std::string initial_stress;
 
-    unsigned int          min_level;
-    unsigned int          bulk_level;
-    unsigned int          max_level;
-    double                band_width;
-    unsigned int          extension_layers;
+    unsigned int min_level;
+    unsigned int bulk_level;
+    unsigned int max_level;
+    double       band_width;
+    unsigned int extension_layers;
+    /**
+     * Whether the vertices of cut cells outside the liquid take the extended
+     * velocity instead of the flow step's ('Outside velocity of cut cells').
+     */
+    bool                  extend_outside_velocity;
     bool                  volume_correction;
     unsigned int          redistancing_interval;
     LevelSetInterpolation level_set_interpolation;
