@@ -8,8 +8,8 @@
 namespace vefs
 {
   /**
-   * Extend the flow fields @p components of @p fields (by default the
-   * velocity, and the stress if there is one) from the nodes flagged in
+   * Extend the @p components of @p fields (flow_components(): the velocity,
+   * and the stress if there is one) from the nodes flagged in
    * @p known (the nodes of liquid cells, flag = 1 in the first component of
    * the node) into @p n_layers layers of cells around the liquid: each layer
    * gives an unknown node the average of the known nodes of the cells it
