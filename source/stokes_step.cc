@@ -121,9 +121,6 @@ namespace vefs
     time         = new_time;
     this->domain = &domain;
     step_systems.reset();
-    velocity_amg.reset();
-    laplace_amg.reset();
-    solved_in_step = false;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         cell->set_active_fe_index(domain.has_liquid(cell) ? liquid_index
@@ -438,7 +435,7 @@ namespace vefs
 
   template <int dim>
   void
-  StokesStep<dim>::build_preconditioners()
+  StokesStep<dim>::build_preconditioners(StepSystems &systems) const
   {
     // AMG for the velocity block, told about the constant modes (one per
     // velocity component) so that aggregation treats them as near-kernel.
@@ -469,21 +466,26 @@ namespace vefs
     velocity_data.smoother_sweeps       = parameters.amg_smoother_sweeps;
     velocity_data.aggregation_threshold = 0.02;
     velocity_data.constant_modes        = constant_modes;
-    velocity_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    velocity_amg->initialize(system_matrix.block(0, 0), velocity_data);
+    systems.velocity_amg =
+      std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    systems.velocity_amg->initialize(system_matrix.block(0, 0), velocity_data);
 
     TrilinosWrappers::PreconditionAMG::AdditionalData laplace_data;
     laplace_data.elliptic = true;
-    laplace_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    laplace_amg->initialize(schur_matrix.block(1, 1), laplace_data);
+    systems.laplace_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    systems.laplace_amg->initialize(schur_matrix.block(1, 1), laplace_data);
   }
 
   template <int dim>
   unsigned int
   StokesStep<dim>::solve()
   {
-    if (!velocity_amg)
-      build_preconditioners();
+    Assert(step_systems, ExcMessage("solve() after assemble()."));
+    StepSystems &systems = *step_systems;
+    // Later solves of the step are contact iterations.
+    const bool contact_iteration = systems.velocity_amg != nullptr;
+    if (!contact_iteration)
+      build_preconditioners(systems);
 
     TrilinosWrappers::MPI::Vector scaled_inverse_mass(
       lumped_pressure_mass.block(1));
@@ -495,14 +497,14 @@ namespace vefs
     scaled_inverse_mass.compress(VectorOperation::insert);
 
     const BlockPreconditioner preconditioner(system_matrix,
-                                             *velocity_amg,
-                                             *laplace_amg,
+                                             *systems.velocity_amg,
+                                             *systems.laplace_amg,
                                              scaled_inverse_mass);
 
     // A contact iteration starts from the solve before it, whose contact set
     // differs in a few unknowns only.
     BlockVector distributed(owned_partitioning, comm);
-    if (solved_in_step)
+    if (contact_iteration)
       {
         for (unsigned int b = 0; b < distributed.n_blocks(); ++b)
           for (const auto i : distributed.block(b).locally_owned_elements())
@@ -545,8 +547,7 @@ namespace vefs
       throw SolverError("the Stokes solution is not finite; check "
                         "'Gravity', the 'Walls' velocities and 'Time/Time "
                         "step'");
-    solution       = distributed;
-    solved_in_step = true;
+    solution = distributed;
     return control.last_step();
   }
 
@@ -588,7 +589,9 @@ namespace vefs
                                           rheology,
                                           fe_collection[liquid_index],
                                           tau),
-                        tau});
+                        tau,
+                        nullptr,
+                        nullptr});
     return *step_systems;
   }
 

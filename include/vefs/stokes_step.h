@@ -170,15 +170,20 @@ namespace vefs
     const LiquidDomain<dim> *domain = nullptr;
 
     /**
-     * The cell and face terms of a step, which keep what they computed: the
-     * fields, the liquid domain and tau stay the same through the contact
-     * iterations, only the constraints change.
+     * What a step keeps through its contact iterations, which change only
+     * the constraints: the cell and face terms (same fields, liquid domain
+     * and tau), and the AMG hierarchies of its first solve (only the rows
+     * of the velocity block that the contact set constrains change, so they
+     * still precondition the later solves, which FGMRES allows; the
+     * pressure Laplacian does not change at all).
      */
     struct StepSystems
     {
-      StokesCellSystem<dim> cells;
-      GhostPenalty<dim>     faces;
-      double                tau;
+      StokesCellSystem<dim>                              cells;
+      GhostPenalty<dim>                                  faces;
+      double                                             tau;
+      std::unique_ptr<TrilinosWrappers::PreconditionAMG> velocity_amg;
+      std::unique_ptr<TrilinosWrappers::PreconditionAMG> laplace_amg;
     };
 
     /** Those of the step, made by its first assembly after setup(). */
@@ -187,24 +192,9 @@ namespace vefs
 
     std::unique_ptr<StepSystems> step_systems;
 
-    /**
-     * The AMG hierarchies of the step, built by its first solve. The contact
-     * iterations change only the rows of the velocity block that the
-     * contact set constrains, so the first hierarchy still preconditions
-     * the later solves (FGMRES allows that); the pressure Laplacian does not
-     * change at all.
-     */
-    std::unique_ptr<TrilinosWrappers::PreconditionAMG> velocity_amg;
-    std::unique_ptr<TrilinosWrappers::PreconditionAMG> laplace_amg;
-    /**
-     * Whether @p solution holds a solve of this step: the next contact
-     * iteration starts from it.
-     */
-    bool solved_in_step = false;
-
-    /** Build the AMG hierarchies of the step from the current matrices. */
+    /** Build the AMG hierarchies of @p systems from the current matrices. */
     void
-    build_preconditioners();
+    build_preconditioners(StepSystems &systems) const;
   };
 } // namespace vefs
 
