@@ -181,6 +181,67 @@ namespace vefs
         values[remote[k]] = remote_values[k];
       return values;
     }
+
+    /**
+     * Four-stage (classical Runge-Kutta) trace of @p starts back through
+     * the frozen velocity field of @p fields over @p tau, given the
+     * velocity @p k and its gradient @p dk at the starts: with the cubic
+     * level set the error of the midpoint trace dominated at CFL 5 (vortex,
+     * h = 1/128: L1 3.4e-3 -> 2.4e-3 with exact fourth-order feet). J =
+     * dX/dx follows the stages, with the velocity gradient G recovered at
+     * the nodes (the Q1 one is first order only): dk_s/dx = G(x_s) dx_s/dx.
+     */
+    template <int dim>
+    void
+    four_stage_trace(
+      const TransportedFields<dim> &fields,
+      const std::array<typename TransportedFields<dim>::VectorType, dim>
+                                    &velocity_gradient,
+      const double                   tau,
+      const BoxMeshLocator<dim>     &locator,
+      const std::vector<Point<dim>> &starts,
+      std::vector<Tensor<1, dim>>   &k,
+      std::vector<Tensor<2, dim>>   &dk,
+      std::vector<Point<dim>>       &feet,
+      std::vector<Tensor<2, dim>>   &jacobians)
+    {
+      Interpolation<dim> at_stage;
+      at_stage.velocity_gradient    = &velocity_gradient;
+      const Tensor<2, dim> identity = unit_symmetric_tensor<dim>();
+
+      feet.resize(starts.size());
+      jacobians.resize(starts.size());
+      for (unsigned int i = 0; i < starts.size(); ++i)
+        {
+          feet[i]      = starts[i] - tau / 6 * k[i];
+          jacobians[i] = identity - tau / 6 * dk[i];
+        }
+      std::vector<Point<dim>> points(starts.size());
+      const double            fractions[3] = {0.5, 0.5, 1};
+      const double            weights[3]   = {2, 2, 1};
+      for (unsigned int stage = 0; stage < 3; ++stage)
+        {
+          for (unsigned int i = 0; i < starts.size(); ++i)
+            points[i] = locator.fold_into_cavity(starts[i] -
+                                                 fractions[stage] * tau * k[i]);
+          const auto at_stage_points =
+            evaluate_at(points, fields, locator, at_stage);
+          for (unsigned int i = 0; i < starts.size(); ++i)
+            {
+              Tensor<2, dim> G;
+              for (unsigned int a = 0; a < dim; ++a)
+                {
+                  k[i][a] = at_stage_points[i][a];
+                  for (unsigned int b = 0; b < dim; ++b)
+                    G[a][b] =
+                      at_stage_points[i][first_extra<dim> + dim * a + b];
+                }
+              dk[i] = G * (identity - fractions[stage] * tau * dk[i]);
+              feet[i] -= weights[stage] * tau / 6 * k[i];
+              jacobians[i] -= weights[stage] * tau / 6 * dk[i];
+            }
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -217,53 +278,27 @@ namespace vefs
       }
     else
       {
-        // Four-stage (classical Runge-Kutta) trace in the frozen velocity
-        // field: with the cubic level set the error of the midpoint trace
-        // dominated at CFL 5 (vortex, h = 1/128: L1 3.4e-3 -> 2.4e-3 with
-        // exact fourth-order feet). J follows the stages, with the velocity
-        // gradient G recovered at the nodes (the Q1 one is first order only):
-        // dk_s/dx = G(x_s) dx_s/dx.
+        // Four-stage trace, with J = dX/dx for the gradient.
         const auto velocity_gradient = recover_nodal_gradients(fields, dim);
-        Interpolation<dim> at_stage;
-        at_stage.velocity_gradient    = &velocity_gradient;
-        const Tensor<2, dim> identity = unit_symmetric_tensor<dim>();
-
         std::vector<Tensor<1, dim>> k(nodes.size());
         std::vector<Tensor<2, dim>> dk(nodes.size());
-        jacobians.resize(nodes.size());
         for (unsigned int i = 0; i < nodes.size(); ++i)
           {
-            k[i] = fields.velocity(nodes[i]);
+            points[i] = nodes[i].point;
+            k[i]      = fields.velocity(nodes[i]);
             for (unsigned int a = 0; a < dim; ++a)
               for (unsigned int b = 0; b < dim; ++b)
                 dk[i][a][b] = velocity_gradient[b](nodes[i].dofs[a]);
-            feet[i]      = nodes[i].point - tau / 6 * k[i];
-            jacobians[i] = identity - tau / 6 * dk[i];
           }
-        const double fractions[3] = {0.5, 0.5, 1};
-        const double weights[3]   = {2, 2, 1};
-        for (unsigned int stage = 0; stage < 3; ++stage)
-          {
-            for (unsigned int i = 0; i < nodes.size(); ++i)
-              points[i] = locator.fold_into_cavity(
-                nodes[i].point - fractions[stage] * tau * k[i]);
-            const auto at_stage_points =
-              evaluate_at(points, fields, locator, at_stage);
-            for (unsigned int i = 0; i < nodes.size(); ++i)
-              {
-                Tensor<2, dim> G;
-                for (unsigned int a = 0; a < dim; ++a)
-                  {
-                    k[i][a] = at_stage_points[i][a];
-                    for (unsigned int b = 0; b < dim; ++b)
-                      G[a][b] =
-                        at_stage_points[i][first_extra<dim> + dim * a + b];
-                  }
-                dk[i] = G * (identity - fractions[stage] * tau * dk[i]);
-                feet[i] -= weights[stage] * tau / 6 * k[i];
-                jacobians[i] -= weights[stage] * tau / 6 * dk[i];
-              }
-          }
+        four_stage_trace<dim>(fields,
+                              velocity_gradient,
+                              tau,
+                              locator,
+                              points,
+                              k,
+                              dk,
+                              feet,
+                              jacobians);
       }
 
     std::vector<double> beyond_contact(nodes.size());
@@ -309,6 +344,101 @@ namespace vefs
         }
     fields.finalize();
   }
+
+  template <int dim>
+  void
+  trace_back(const TransportedFields<dim> &fields,
+             const std::array<typename TransportedFields<dim>::VectorType, dim>
+                                         &velocity_gradient,
+             const double                 tau,
+             const BoxMeshLocator<dim>   &locator,
+             std::vector<Point<dim>>     &points,
+             std::vector<Tensor<2, dim>> *jacobians,
+             std::vector<double>         &beyond_contact)
+  {
+    Interpolation<dim> at_start;
+    at_start.velocity_gradient = &velocity_gradient;
+    const auto at_points       = evaluate_at(points, fields, locator, at_start);
+    std::vector<Tensor<1, dim>> k(points.size());
+    std::vector<Tensor<2, dim>> dk(points.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int a = 0; a < dim; ++a)
+        {
+          k[i][a] = at_points[i][a];
+          for (unsigned int b = 0; b < dim; ++b)
+            dk[i][a][b] = at_points[i][first_extra<dim> + dim * a + b];
+        }
+    std::vector<Point<dim>>     feet;
+    std::vector<Tensor<2, dim>> step_jacobians;
+    four_stage_trace<dim>(fields,
+                          velocity_gradient,
+                          tau,
+                          locator,
+                          points,
+                          k,
+                          dk,
+                          feet,
+                          step_jacobians);
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        beyond_contact[i] =
+          std::max(beyond_contact[i],
+                   locator.distance_beyond_contact_walls(feet[i]));
+        points[i] = locator.fold_into_cavity(feet[i]);
+        // Chain rule: the newer steps were traced first.
+        if (jacobians)
+          (*jacobians)[i] = step_jacobians[i] * (*jacobians)[i];
+      }
+  }
+
+  template <int dim>
+  std::vector<std::pair<double, Tensor<1, dim>>>
+  level_set_at(const TransportedFields<dim>  &fields,
+               const std::vector<Point<dim>> &points,
+               const BoxMeshLocator<dim>     &locator,
+               const LevelSetInterpolation    interpolation)
+  {
+    const bool gradient_augmented =
+      interpolation == LevelSetInterpolation::gradient_augmented;
+    LevelSetHermite<dim> hermite;
+    Interpolation<dim>   how;
+    if (interpolation != LevelSetInterpolation::linear)
+      {
+        hermite.recover(fields, gradient_augmented);
+        how.hermite = &hermite;
+        how.limited = interpolation == LevelSetInterpolation::limited_cubic;
+        how.level_set_gradient = gradient_augmented;
+      }
+    const auto values = evaluate_at(points, fields, locator, how);
+    std::vector<std::pair<double, Tensor<1, dim>>> result(points.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        result[i].first =
+          values[i][TransportedFields<dim>::level_set_component];
+        if (gradient_augmented)
+          for (unsigned int d = 0; d < dim; ++d)
+            result[i].second[d] = values[i][first_extra<dim> + d];
+      }
+    return result;
+  }
+
+#define VEFS_INSTANTIATE(dim)                                                \
+  template void trace_back<dim>(                                             \
+    const TransportedFields<dim> &,                                          \
+    const std::array<typename TransportedFields<dim>::VectorType, dim> &,    \
+    const double,                                                            \
+    const BoxMeshLocator<dim> &,                                             \
+    std::vector<Point<dim>> &,                                               \
+    std::vector<Tensor<2, dim>> *,                                           \
+    std::vector<double> &);                                                  \
+  template std::vector<std::pair<double, Tensor<1, dim>>> level_set_at<dim>( \
+    const TransportedFields<dim> &,                                          \
+    const std::vector<Point<dim>> &,                                         \
+    const BoxMeshLocator<dim> &,                                             \
+    const LevelSetInterpolation);
+  VEFS_INSTANTIATE(2)
+  VEFS_INSTANTIATE(3)
+#undef VEFS_INSTANTIATE
 
   template void
   advect_along_characteristics<2>(TransportedFields<2> &,

@@ -389,6 +389,20 @@ namespace vefs
                         "interpolations smear: with the gradient augmented "
                         "level set, which carries its own gradient, 0 is "
                         "more accurate for transport.");
+      prm.declare_entry(
+        "Remap distance",
+        "0",
+        Patterns::Double(0),
+        "In finest cells: 0 interpolates the level set at the feet of the "
+        "characteristics at every step and adapts the mesh at every step. A "
+        "positive value does both only once the surface has moved about this "
+        "far since the last time (a remap); in between, the level set of a "
+        "step is the remapped one seen through the characteristics of all "
+        "the steps since (each traced in the velocity of its own step), so "
+        "short steps add no interpolation error and the shape error no "
+        "longer grows as the steps shrink (Rider-Kothe vortex at h = 1/128: "
+        "doc/transport.md). The fine band is widened to this many cells. "
+        "Redistancing (at its interval) is done at remaps only.");
       prm.declare_entry("Level set interpolation",
                         "linear",
                         Patterns::Selection(
@@ -632,6 +646,7 @@ namespace vefs
       prm.get("Outside velocity of cut cells") == "extension";
     volume_correction     = prm.get_bool("Volume correction");
     redistancing_interval = prm.get_integer("Redistancing interval");
+    remap_distance        = prm.get_double("Remap distance");
     {
       const std::string name  = prm.get("Level set interpolation");
       level_set_interpolation = name == "linear" ? LevelSetInterpolation::linear

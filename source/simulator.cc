@@ -52,6 +52,7 @@ namespace vefs
     , fields(triangulation,
              rheology.has_stress(),
              parameters.periodic_directions())
+    , level_set_history(parameters.remap_distance)
     , flow(parameters, triangulation)
     , statistics_file(output.path(), comm, !checkpoint.empty())
     , visualization(parameters.output_directory)
@@ -258,6 +259,9 @@ namespace vefs
               << std::endl;
     }
     since_checkpoint.restart();
+    // A resumed run starts without the steps since the last remap: this
+    // run forgets them too, so that both go on alike.
+    level_set_history.reset();
     const std::string directory =
       parameters.output_directory + "/" + CheckpointNames::current;
     std::ostringstream where;
@@ -442,7 +446,9 @@ namespace vefs
         const double expected_cfl =
           std::max(parameters.target_cfl, statistics.cfl);
 
-        // 1. Advection: phi and u along the characteristics.
+        // 1. Advection: phi and u along the characteristics; between
+        // remaps the level set from the last remap through all steps since.
+        bool remap = true;
         {
           TimerOutput::Scope scope(timer, "1 advection");
           if (prescribed_velocity)
@@ -451,26 +457,45 @@ namespace vefs
               prescribed_velocity->set_time(statistics.time + tau / 2);
               fields.set_velocity(*prescribed_velocity);
             }
+          level_set_history.add_step(fields, tau);
           advect_along_characteristics(fields,
                                        tau,
                                        *locator,
                                        parameters.level_set_interpolation);
-          if (parameters.redistancing_interval > 0 &&
+          if (level_set_history.enabled())
+            {
+              level_set_history.compose(fields,
+                                        *locator,
+                                        parameters.level_set_interpolation);
+              remap = level_set_history.remap_due(statistics.cfl, expected_cfl);
+            }
+          if (remap && parameters.redistancing_interval > 0 &&
               statistics.step % parameters.redistancing_interval == 0)
             redistance(fields, parameters.level_set_interpolation);
           if (parameters.volume_correction)
-            correct_volume(fields, expected_volume);
+            {
+              const double shift = correct_volume(fields, expected_volume);
+              if (!remap)
+                level_set_history.shift_base(fields, shift);
+            }
         }
 
-        // 2. Mesh: refine around the new free surface, mark liquid cells.
+        // 2. Mesh: refine around the new free surface (at remaps), mark
+        // liquid cells.
         {
           TimerOutput::Scope scope(timer, "2 mesh adaptation");
-          levels.expect_cfl(expected_cfl);
-          adapt_mesh(triangulation,
-                     fields,
-                     levels,
-                     1,
-                     parameters.level_set_interpolation);
+          if (remap)
+            {
+              levels.expect_cfl(
+                std::max(expected_cfl,
+                         level_set_history.cells_between_remaps()));
+              adapt_mesh(triangulation,
+                         fields,
+                         levels,
+                         1,
+                         parameters.level_set_interpolation);
+              level_set_history.remap(fields);
+            }
           domain = LiquidDomain<dim>(fields);
         }
 

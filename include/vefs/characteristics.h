@@ -6,6 +6,10 @@
 #include <vefs/box_mesh_locator.h>
 #include <vefs/transported_fields.h>
 
+#include <array>
+#include <utility>
+#include <vector>
+
 namespace vefs
 {
   /**
@@ -27,6 +31,38 @@ namespace vefs
                                const double                tau,
                                const BoxMeshLocator<dim>  &locator,
                                const LevelSetInterpolation interpolation);
+
+  /**
+   * One step of the trace above for arbitrary @p points (four stages, in
+   * the frozen velocity that @p fields hold, with its nodal gradient
+   * @p velocity_gradient from recover_nodal_gradients()): @p points become
+   * their feet, moved back into the cavity; J = dX/dx is multiplied onto
+   * @p jacobians from the left (if not null), and @p beyond_contact keeps
+   * the largest distance of a foot beyond a contact wall. Tracing the newest
+   * step first composes the traces of several steps (LevelSetHistory).
+   */
+  template <int dim>
+  void
+  trace_back(const TransportedFields<dim> &fields,
+             const std::array<typename TransportedFields<dim>::VectorType, dim>
+                                         &velocity_gradient,
+             const double                 tau,
+             const BoxMeshLocator<dim>   &locator,
+             std::vector<Point<dim>>     &points,
+             std::vector<Tensor<2, dim>> *jacobians,
+             std::vector<double>         &beyond_contact);
+
+  /**
+   * The level set of @p fields at @p points anywhere in the mesh,
+   * interpolated as @p interpolation says, with its gradient (gradient
+   * augmented only; zero otherwise).
+   */
+  template <int dim>
+  std::vector<std::pair<double, Tensor<1, dim>>>
+  level_set_at(const TransportedFields<dim>  &fields,
+               const std::vector<Point<dim>> &points,
+               const BoxMeshLocator<dim>     &locator,
+               const LevelSetInterpolation    interpolation);
 } // namespace vefs
 
 #endif

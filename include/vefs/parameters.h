@@ -147,9 +147,11 @@ namespace vefs
      * Whether the vertices of cut cells outside the liquid take the extended
      * velocity instead of the flow step's ('Outside velocity of cut cells').
      */
-    bool                  extend_outside_velocity;
-    bool                  volume_correction;
-    unsigned int          redistancing_interval;
+    bool         extend_outside_velocity;
+    bool         volume_correction;
+    unsigned int redistancing_interval;
+    /** Finest cells the surface moves between remaps; 0: every step. */
+    double                remap_distance;
     LevelSetInterpolation level_set_interpolation;
 
     double       solver_tolerance;

@@ -8,6 +8,7 @@
 
 #include <vefs/box_mesh_locator.h>
 #include <vefs/checkpoint.h>
+#include <vefs/level_set_history.h>
 #include <vefs/liquid_domain.h>
 #include <vefs/mesh_adaptation.h>
 #include <vefs/output_directory.h>
@@ -162,6 +163,7 @@ namespace vefs
     std::unique_ptr<BoxMeshLocator<dim>>      locator;
     MeshLevels                                levels;
     TransportedFields<dim>                    fields;
+    LevelSetHistory<dim>                      level_set_history;
     StokesStep<dim>                           flow;
     StatisticsFile<dim>                       statistics_file;
     Visualization<dim>                        visualization;

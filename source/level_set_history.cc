@@ -1,0 +1,160 @@
+#include <vefs/characteristics.h>
+#include <vefs/level_set_history.h>
+#include <vefs/nodal_gradients.h>
+
+#include <algorithm>
+
+namespace vefs
+{
+  namespace
+  {
+    /**
+     * Lends @p vector to @p slot of the fields for as long as it lives, so
+     * that the fields' own interpolation reads it: the kept vectors have
+     * the fields' layout, on the same mesh.
+     */
+    template <typename VectorType>
+    class Lent
+    {
+    public:
+      Lent(VectorType &slot, VectorType &vector)
+        : slot(slot)
+        , vector(vector)
+      {
+        slot.swap(vector);
+      }
+
+      ~Lent()
+      {
+        slot.swap(vector);
+      }
+
+    private:
+      VectorType &slot;
+      VectorType &vector;
+    };
+  } // namespace
+
+  template <int dim>
+  LevelSetHistory<dim>::LevelSetHistory(const double remap_distance)
+    : remap_distance(remap_distance)
+  {
+  }
+
+  template <int dim>
+  void
+  LevelSetHistory<dim>::add_step(const TransportedFields<dim> &fields,
+                                 const double                  tau)
+  {
+    if (!has_base)
+      return;
+    steps.push_back(
+      Step{fields.fields, recover_nodal_gradients(fields, dim), tau});
+    // A copy holds the locally owned values only.
+    steps.back().velocity.update_ghost_values();
+  }
+
+  template <int dim>
+  void
+  LevelSetHistory<dim>::compose(TransportedFields<dim>     &fields,
+                                const BoxMeshLocator<dim>  &locator,
+                                const LevelSetInterpolation interpolation)
+  {
+    if (!has_base)
+      return;
+    const bool gradient_augmented =
+      interpolation == LevelSetInterpolation::gradient_augmented;
+    const auto &nodes = fields.nodes();
+
+    std::vector<Point<dim>>     points(nodes.size());
+    std::vector<Tensor<2, dim>> jacobians(nodes.size(),
+                                          unit_symmetric_tensor<dim>());
+    std::vector<double>         beyond_contact(nodes.size(), 0.);
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      points[i] = nodes[i].point;
+    for (auto step = steps.rbegin(); step != steps.rend(); ++step)
+      {
+        const Lent velocity(fields.fields, step->velocity);
+        trace_back<dim>(fields,
+                        step->velocity_gradient,
+                        step->tau,
+                        locator,
+                        points,
+                        gradient_augmented ? &jacobians : nullptr,
+                        beyond_contact);
+      }
+
+    std::vector<std::pair<double, Tensor<1, dim>>> at_feet;
+    {
+      const Lent level_set(fields.fields, base_level_set);
+      const Lent gradient(fields.level_set_gradient, base_gradient);
+      at_feet = level_set_at<dim>(fields, points, locator, interpolation);
+    }
+
+    constexpr unsigned int psi = TransportedFields<dim>::level_set_component;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        // Liquid that left a contact wall left empty space behind.
+        fields.fields(nodes[i].dofs[psi]) =
+          beyond_contact[i] > 0 ? std::max(at_feet[i].first, beyond_contact[i])
+                                : at_feet[i].first;
+        if (gradient_augmented)
+          {
+            // grad psi^n(x) = J^T grad psi^m(X(x)).
+            const Tensor<1, dim> gradient = at_feet[i].second * jacobians[i];
+            for (unsigned int d = 0; d < dim; ++d)
+              fields.level_set_gradient(nodes[i].dofs[d]) = gradient[d];
+          }
+      }
+    fields.finalize();
+  }
+
+  template <int dim>
+  bool
+  LevelSetHistory<dim>::remap_due(const double cfl, const double next_cfl)
+  {
+    moved += cfl;
+    return !has_base || moved + next_cfl > remap_distance;
+  }
+
+  template <int dim>
+  void
+  LevelSetHistory<dim>::remap(const TransportedFields<dim> &fields)
+  {
+    if (!enabled())
+      return;
+    base_level_set = fields.fields;
+    base_gradient  = fields.level_set_gradient;
+    base_level_set.update_ghost_values();
+    base_gradient.update_ghost_values();
+    steps.clear();
+    moved    = 0;
+    has_base = true;
+  }
+
+  template <int dim>
+  void
+  LevelSetHistory<dim>::shift_base(TransportedFields<dim> &fields,
+                                   const double            shift)
+  {
+    if (!has_base)
+      return;
+    const Lent level_set(fields.fields, base_level_set);
+    for (const auto &node : fields.nodes())
+      fields.fields(node.dofs[TransportedFields<dim>::level_set_component]) +=
+        shift;
+    fields.finalize();
+  }
+
+  template <int dim>
+  void
+  LevelSetHistory<dim>::reset()
+  {
+    steps.clear();
+    moved    = 0;
+    has_base = false;
+  }
+
+  template class LevelSetHistory<2>;
+  template class LevelSetHistory<3>;
+} // namespace vefs
