@@ -123,10 +123,16 @@ namespace vefs
   {
     if (!enabled())
       return;
-    base_level_set = fields.fields;
-    base_gradient  = fields.level_set_gradient;
-    base_level_set.update_ghost_values();
-    base_gradient.update_ghost_values();
+    // On the layout of the current mesh: an assignment would keep an older
+    // one of the same local range.
+    for (auto [base, current] :
+         {std::make_pair(&base_level_set, &fields.fields),
+          std::make_pair(&base_gradient, &fields.level_set_gradient)})
+      {
+        base->reinit(current->get_partitioner());
+        base->copy_locally_owned_data_from(*current);
+        base->update_ghost_values();
+      }
     steps.clear();
     moved    = 0;
     has_base = true;
@@ -144,15 +150,6 @@ namespace vefs
       fields.fields(node.dofs[TransportedFields<dim>::level_set_component]) +=
         shift;
     fields.finalize();
-  }
-
-  template <int dim>
-  void
-  LevelSetHistory<dim>::reset()
-  {
-    steps.clear();
-    moved    = 0;
-    has_base = false;
   }
 
   template class LevelSetHistory<2>;

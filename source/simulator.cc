@@ -259,9 +259,6 @@ namespace vefs
               << std::endl;
     }
     since_checkpoint.restart();
-    // A resumed run starts without the steps since the last remap: this
-    // run forgets them too, so that both go on alike.
-    level_set_history.reset();
     const std::string directory =
       parameters.output_directory + "/" + CheckpointNames::current;
     std::ostringstream where;

@@ -6,7 +6,7 @@
 #include <vefs/transported_fields.h>
 
 #include <array>
-#include <vector>
+#include <deque>
 
 namespace vefs
 {
@@ -23,7 +23,8 @@ namespace vefs
    * The level set is thus interpolated once per remap, however many steps
    * lie between, and the mesh adapts at remaps only. With the gradient
    * augmented level set the gradient follows the chain rule through all the
-   * traces.
+   * traces. A checkpoint does not hold these steps: a resumed run starts
+   * with a remap.
    */
   template <int dim>
   class LevelSetHistory
@@ -74,13 +75,6 @@ namespace vefs
     void
     shift_base(TransportedFields<dim> &fields, const double shift);
 
-    /**
-     * Forget the base: the next step interpolates the level set itself and
-     * is a remap (as after a restart from a checkpoint).
-     */
-    void
-    reset();
-
     /** The surface may move this many finest cells between two remaps. */
     double
     cells_between_remaps() const
@@ -99,11 +93,13 @@ namespace vefs
       double                      tau;
     };
 
-    const double      remap_distance;
-    bool              has_base = false;
-    VectorType        base_level_set;
-    VectorType        base_gradient;
-    std::vector<Step> steps;
+    const double remap_distance;
+    bool         has_base = false;
+    VectorType   base_level_set;
+    VectorType   base_gradient;
+    /** A deque: a vector would copy the steps when it grows, and a copy
+     * of a vector loses its ghost values. */
+    std::deque<Step> steps;
     /** Finest cells the surface moved since the base. */
     double moved = 0;
   };
