@@ -400,9 +400,12 @@ namespace vefs
         "step is the remapped one seen through the characteristics of all "
         "the steps since (each traced in the velocity of its own step), so "
         "short steps add no interpolation error and the shape error no "
-        "longer grows as the steps shrink (Rider-Kothe vortex at h = 1/128: "
-        "doc/transport.md). The fine band is widened to this many cells. "
-        "Redistancing (at its interval) is done at remaps only.");
+        "longer grows as the steps shrink (Rider-Kothe vortex at h = 1/128, "
+        "CFL 1, without volume correction: L1 error 4.6e-3 with 0, 4.0e-4 "
+        "with 10; doc/transport.md). The fine band is widened to this many "
+        "cells. Redistancing (at its interval) is done at remaps only. A "
+        "checkpoint does not hold the steps since the last remap: a resumed "
+        "run starts with a remap.");
       prm.declare_entry("Level set interpolation",
                         "linear",
                         Patterns::Selection(
