@@ -185,6 +185,7 @@ namespace vefs
   write_checkpoint(const std::string            &output_directory,
                    const std::string            &parameters_text,
                    const TransportedFields<dim> &fields,
+                   const LevelSetHistory<dim>   &history,
                    const RunState<dim>          &state)
   {
     const auto &triangulation =
@@ -214,10 +215,13 @@ namespace vefs
       // The level set gradient as well: the gradient augmented transport
       // carries it (format 1 did not save it, and resumed such runs
       // differently).
-      transfer.prepare_for_serialization(
-        std::vector<const typename TransportedFields<dim>::VectorType *>{
-          &fields.fields,
-          &fields.level_set_gradient});
+      // And the steps since the last remap of the level set.
+      std::vector<const typename TransportedFields<dim>::VectorType *> vectors{
+        &fields.fields,
+        &fields.level_set_gradient};
+      for (const auto *vector : history.vectors())
+        vectors.push_back(vector);
+      transfer.prepare_for_serialization(vectors);
       triangulation.save(next + "/mesh");
     }
     // The files of every rank are complete before rank 0 lists them.
@@ -258,6 +262,12 @@ namespace vefs
                << '\n';
           for (const auto &[time, name] : state.visualization_series)
             text << "output " << exact(time) << ' ' << name << '\n';
+          const auto remap = history.scalars();
+          text << "level_set_history " << remap.has_base << ' '
+               << exact(remap.moved);
+          for (const double tau : remap.taus)
+            text << ' ' << exact(tau);
+          text << '\n';
           text << file_lines(next) << "end\n";
           {
             std::ofstream file(next + "/state", std::ios::binary);
@@ -288,7 +298,8 @@ namespace vefs
   RunState<dim>
   read_checkpoint(const std::string                         &directory,
                   parallel::distributed::Triangulation<dim> &triangulation,
-                  TransportedFields<dim>                    &fields)
+                  TransportedFields<dim>                    &fields,
+                  LevelSetHistory<dim>                      &history)
   {
     const MPI_Comm comm = triangulation.get_communicator();
     std::string    problem, text;
@@ -304,7 +315,8 @@ namespace vefs
     problem = Utilities::MPI::broadcast(comm, problem, 0);
     text    = Utilities::MPI::broadcast(comm, text, 0);
 
-    RunState<dim> state;
+    RunState<dim>                          state;
+    typename LevelSetHistory<dim>::Scalars remap;
     try
       {
         if (!problem.empty())
@@ -330,6 +342,19 @@ namespace vefs
         state.last_output_step  = value("last_output_step") == "none"
                                     ? numbers::invalid_unsigned_int
                                     : to_unsigned(value("last_output_step"));
+        // Checkpoints written before the remap distance have no such line.
+        if (const auto found = entries.find("level_set_history");
+            found != entries.end())
+          {
+            const auto &values = found->second;
+            if (values.size() < 2)
+              throw std::runtime_error(
+                "'state' has a malformed level_set_history line");
+            remap.has_base = to_unsigned(values[0]) != 0;
+            remap.moved    = to_double(values[1]);
+            for (unsigned int i = 2; i < values.size(); ++i)
+              remap.taus.push_back(to_double(values[i]));
+          }
         for (auto [it, end] = entries.equal_range("output"); it != end; ++it)
           {
             if (it->second.size() != 2)
@@ -355,6 +380,8 @@ namespace vefs
         vector.zero_out_ghost_values();
         targets.push_back(&vector);
       }
+    for (auto *vector : history.restore(remap, fields))
+      targets.push_back(vector);
     parallel::distributed::
       SolutionTransfer<dim, typename TransportedFields<dim>::VectorType>
         transfer(fields.dof_handler);
@@ -362,6 +389,7 @@ namespace vefs
     fields.fields             = loaded[0];
     fields.level_set_gradient = loaded[1];
     fields.finalize();
+    history.restored();
     return state;
   }
 
@@ -369,18 +397,22 @@ namespace vefs
   write_checkpoint<2>(const std::string &,
                       const std::string &,
                       const TransportedFields<2> &,
+                      const LevelSetHistory<2> &,
                       const RunState<2> &);
   template std::string
   write_checkpoint<3>(const std::string &,
                       const std::string &,
                       const TransportedFields<3> &,
+                      const LevelSetHistory<3> &,
                       const RunState<3> &);
   template RunState<2>
   read_checkpoint<2>(const std::string &,
                      parallel::distributed::Triangulation<2> &,
-                     TransportedFields<2> &);
+                     TransportedFields<2> &,
+                     LevelSetHistory<2> &);
   template RunState<3>
   read_checkpoint<3>(const std::string &,
                      parallel::distributed::Triangulation<3> &,
-                     TransportedFields<3> &);
+                     TransportedFields<3> &,
+                     LevelSetHistory<3> &);
 } // namespace vefs

@@ -152,6 +152,77 @@ namespace vefs
     fields.finalize();
   }
 
+  template <int dim>
+  typename LevelSetHistory<dim>::Scalars
+  LevelSetHistory<dim>::scalars() const
+  {
+    Scalars result{has_base, moved, {}};
+    for (const Step &step : steps)
+      result.taus.push_back(step.tau);
+    return result;
+  }
+
+  template <int dim>
+  std::vector<const typename TransportedFields<dim>::VectorType *>
+  LevelSetHistory<dim>::vectors() const
+  {
+    std::vector<const VectorType *> result;
+    if (!has_base)
+      return result;
+    result = {&base_level_set, &base_gradient};
+    for (const Step &step : steps)
+      {
+        result.push_back(&step.velocity);
+        for (const VectorType &component : step.velocity_gradient)
+          result.push_back(&component);
+      }
+    return result;
+  }
+
+  template <int dim>
+  std::vector<typename TransportedFields<dim>::VectorType *>
+  LevelSetHistory<dim>::restore(const Scalars                &scalars,
+                                const TransportedFields<dim> &fields)
+  {
+    has_base = scalars.has_base;
+    moved    = scalars.moved;
+    steps.clear();
+    std::vector<VectorType *> result;
+    if (!has_base)
+      return result;
+    result = {&base_level_set, &base_gradient};
+    for (const double tau : scalars.taus)
+      {
+        steps.emplace_back();
+        steps.back().tau = tau;
+        result.push_back(&steps.back().velocity);
+        for (VectorType &component : steps.back().velocity_gradient)
+          result.push_back(&component);
+      }
+    for (VectorType *vector : result)
+      {
+        fields.initialize_vector(*vector);
+        vector->zero_out_ghost_values();
+      }
+    return result;
+  }
+
+  template <int dim>
+  void
+  LevelSetHistory<dim>::restored()
+  {
+    if (!has_base)
+      return;
+    base_level_set.update_ghost_values();
+    base_gradient.update_ghost_values();
+    for (Step &step : steps)
+      {
+        step.velocity.update_ghost_values();
+        for (VectorType &component : step.velocity_gradient)
+          component.update_ghost_values();
+      }
+  }
+
   template class LevelSetHistory<2>;
   template class LevelSetHistory<3>;
 } // namespace vefs

@@ -403,9 +403,8 @@ namespace vefs
         "longer grows as the steps shrink (Rider-Kothe vortex at h = 1/128, "
         "CFL 1, without volume correction: L1 error 4.6e-3 with 0, 4.0e-4 "
         "with 10; doc/transport.md). The fine band is widened to this many "
-        "cells. Redistancing (at its interval) is done at remaps only. A "
-        "checkpoint does not hold the steps since the last remap: a resumed "
-        "run starts with a remap.");
+        "cells. Redistancing (at its interval) is done at remaps only. "
+        "Checkpoints hold the steps since the last remap.");
       prm.declare_entry("Level set interpolation",
                         "linear",
                         Patterns::Selection(

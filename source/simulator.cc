@@ -207,7 +207,7 @@ namespace vefs
   Simulator<dim>::resume()
   {
     const RunState<dim> state =
-      read_checkpoint(checkpoint, triangulation, fields);
+      read_checkpoint(checkpoint, triangulation, fields, level_set_history);
     initial_volume   = state.initial_volume;
     expected_volume  = state.expected_volume;
     last_output_step = state.last_output_step;
@@ -252,6 +252,7 @@ namespace vefs
       problem = write_checkpoint(parameters.output_directory,
                                  parameters_text,
                                  fields,
+                                 level_set_history,
                                  state);
       if (problem.empty())
         pcout << "checkpoint of step " << statistics.step << " written in "

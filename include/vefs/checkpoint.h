@@ -3,6 +3,7 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <vefs/level_set_history.h>
 #include <vefs/postprocessing.h>
 #include <vefs/transported_fields.h>
 
@@ -57,8 +58,9 @@ namespace vefs
   find_checkpoint(const std::string &output_directory);
 
   /**
-   * Write the mesh, the fields, @p state and the parameters of the run
-   * (@p parameters_text) into checkpoint.new/ of @p output_directory, then
+   * Write the mesh, the fields, the level set @p history, @p state and the
+   * parameters of the run (@p parameters_text) into checkpoint.new/ of
+   * @p output_directory, then
    * make it checkpoint/ by renaming: a kill at any moment leaves a complete
    * checkpoint. Collective; returns what went wrong, or "" (on all ranks).
    */
@@ -67,12 +69,15 @@ namespace vefs
   write_checkpoint(const std::string            &output_directory,
                    const std::string            &parameters_text,
                    const TransportedFields<dim> &fields,
+                   const LevelSetHistory<dim>   &history,
                    const RunState<dim>          &state);
 
   /**
    * Load the mesh and the fields of the checkpoint in @p directory (from
    * find_checkpoint()) into @p triangulation, which holds the coarse mesh
-   * only, and @p fields; return the state. Any number of ranks. Throws
+   * only, @p fields and @p history; return the state. Any number of ranks
+   * (a checkpoint without a history line, as written before the remap
+   * distance, leaves the history empty). Throws
    * CheckpointError, on all ranks, if the checkpoint is incomplete or
    * damaged.
    */
@@ -80,7 +85,8 @@ namespace vefs
   RunState<dim>
   read_checkpoint(const std::string                         &directory,
                   parallel::distributed::Triangulation<dim> &triangulation,
-                  TransportedFields<dim>                    &fields);
+                  TransportedFields<dim>                    &fields,
+                  LevelSetHistory<dim>                      &history);
 } // namespace vefs
 
 #endif

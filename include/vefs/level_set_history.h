@@ -7,6 +7,7 @@
 
 #include <array>
 #include <deque>
+#include <vector>
 
 namespace vefs
 {
@@ -23,8 +24,7 @@ namespace vefs
    * The level set is thus interpolated once per remap, however many steps
    * lie between, and the mesh adapts at remaps only. With the gradient
    * augmented level set the gradient follows the chain rule through all the
-   * traces. A checkpoint does not hold these steps: a resumed run starts
-   * with a remap.
+   * traces. Checkpoints hold the history, so a resumed run goes on alike.
    */
   template <int dim>
   class LevelSetHistory
@@ -74,6 +74,36 @@ namespace vefs
     /** Add @p shift to the base level set as to the current one. */
     void
     shift_base(TransportedFields<dim> &fields, const double shift);
+
+    /** What a checkpoint holds of the history besides its vectors. */
+    struct Scalars
+    {
+      bool                has_base = false;
+      double              moved    = 0;
+      std::vector<double> taus;
+    };
+
+    Scalars
+    scalars() const;
+
+    /**
+     * The kept vectors (laid out like the fields): the base level set and
+     * its gradient, then per step its velocity and velocity gradient.
+     */
+    std::vector<const typename TransportedFields<dim>::VectorType *>
+    vectors() const;
+
+    /**
+     * Make a history as @p scalars describe, with vectors laid out like
+     * @p fields, and return them in the order of vectors() to be filled
+     * (then call restored()).
+     */
+    std::vector<typename TransportedFields<dim>::VectorType *>
+    restore(const Scalars &scalars, const TransportedFields<dim> &fields);
+
+    /** Make the ghost values of the filled vectors consistent. */
+    void
+    restored();
 
     /** The surface may move this many finest cells between two remaps. */
     double
