@@ -126,11 +126,6 @@ namespace vefs
     schur         = 0;
     rhs           = 0;
     pressure_mass = 0;
-    // The lumped mass of the whole cell: a small cut must not make the
-    // preconditioner's M_p^-1 large.
-    for (unsigned int i = 0; i < n_dofs; ++i)
-      if (component[i] == dim)
-        pressure_mass(i) = cell->measure() / cell->n_vertices() / mu;
     if (is_cut)
       add_surface_terms(cell, h);
 
@@ -160,7 +155,10 @@ namespace vefs
             eps_u[k] = symmetrize(grad_u[k]);
             div_u[k] = trace(grad_u[k]);
           }
-        const double   JxW     = values.JxW[q];
+        const double JxW = values.JxW[q];
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          if (component[i] == dim)
+            pressure_mass(i) += phi_p[i] * JxW / mu;
         Tensor<1, dim> forcing = rho / tau * u_star[q] + rho * gravity;
         // The explicit part of the stress, k div sigma* (k = kept), is a
         // force in the strong residual of the pressure stabilisation.
@@ -214,6 +212,17 @@ namespace vefs
               rhs(i) -= kept * sigma_star[q] * eps_u[i] * JxW;
           }
       }
+    // The lumped pressure mass of the liquid part (with the whole cell's,
+    // the mass of the staircase, the viscous regime took 1.6 times the
+    // iterations on fine meshes: mu = 10 Pa s, L = 8, 25.6 against 16.5 per
+    // step), but at least min_pressure_mass_fraction of the whole cell's:
+    // a small cut must not make the preconditioner's M_p^-1 large.
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      if (component[i] == dim)
+        pressure_mass(i) =
+          std::max(pressure_mass(i),
+                   min_pressure_mass_fraction * cell->measure() /
+                     cell->n_vertices() / mu);
     add_open_wall_terms(cell, h);
   }
 
