@@ -62,7 +62,9 @@ namespace vefs
      * Whether the step just taken, which moved the surface by @p cfl
      * finest cells, must be a remap, so that the next step of @p next_cfl
      * cells does not carry the surface further than the remap distance
-     * from where the mesh last adapted to it.
+     * from where the mesh last adapted to it; also once twice as many
+     * steps are kept as the remap distance (in cells), which bounds the
+     * cost of a step.
      */
     bool
     remap_due(const double cfl, const double next_cfl);
