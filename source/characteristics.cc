@@ -185,7 +185,8 @@ namespace vefs
     /**
      * Four-stage (classical Runge-Kutta) trace of @p starts back through
      * the frozen velocity field of @p fields over @p tau, given the
-     * velocity @p k and its gradient @p dk at the starts: with the cubic
+     * velocity @p k and its gradient @p dk at the starts (both overwritten
+     * by those of the later stages): with the cubic
      * level set the error of the midpoint trace dominated at CFL 5 (vortex,
      * h = 1/128: L1 3.4e-3 -> 2.4e-3 with exact fourth-order feet). J =
      * dX/dx follows the stages, with the velocity gradient G recovered at
@@ -241,6 +242,29 @@ namespace vefs
               jacobians[i] -= weights[stage] * tau / 6 * dk[i];
             }
         }
+    }
+
+    /**
+     * How the level set is interpolated at the feet as @p interpolation
+     * says: the Hermite modes recover their nodal derivatives into
+     * @p hermite, which must outlive the result.
+     */
+    template <int dim>
+    Interpolation<dim>
+    level_set_interpolation(const TransportedFields<dim> &fields,
+                            const LevelSetInterpolation   interpolation,
+                            LevelSetHermite<dim>         &hermite)
+    {
+      Interpolation<dim> how;
+      if (interpolation == LevelSetInterpolation::linear)
+        return how;
+      const bool gradient_augmented =
+        interpolation == LevelSetInterpolation::gradient_augmented;
+      hermite.recover(fields, gradient_augmented);
+      how.hermite = &hermite;
+      how.limited = interpolation == LevelSetInterpolation::limited_cubic;
+      how.level_set_gradient = gradient_augmented;
+      return how;
     }
   } // namespace
 
@@ -309,15 +333,11 @@ namespace vefs
       }
 
     LevelSetHermite<dim> hermite;
-    Interpolation<dim>   at_foot;
-    if (interpolation != LevelSetInterpolation::linear)
-      {
-        hermite.recover(fields, gradient_augmented);
-        at_foot.hermite = &hermite;
-        at_foot.limited = interpolation == LevelSetInterpolation::limited_cubic;
-        at_foot.level_set_gradient = gradient_augmented;
-      }
-    auto at_feet = evaluate_at(points, fields, locator, at_foot);
+    auto                 at_feet =
+      evaluate_at(points,
+                  fields,
+                  locator,
+                  level_set_interpolation(fields, interpolation, hermite));
     // Liquid that leaves a contact wall leaves empty space behind: a foot
     // beyond the wall is that far outside the liquid.
     for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -401,15 +421,11 @@ namespace vefs
     const bool gradient_augmented =
       interpolation == LevelSetInterpolation::gradient_augmented;
     LevelSetHermite<dim> hermite;
-    Interpolation<dim>   how;
-    if (interpolation != LevelSetInterpolation::linear)
-      {
-        hermite.recover(fields, gradient_augmented);
-        how.hermite = &hermite;
-        how.limited = interpolation == LevelSetInterpolation::limited_cubic;
-        how.level_set_gradient = gradient_augmented;
-      }
-    const auto values = evaluate_at(points, fields, locator, how);
+    const auto           values =
+      evaluate_at(points,
+                  fields,
+                  locator,
+                  level_set_interpolation(fields, interpolation, hermite));
     std::vector<std::pair<double, Tensor<1, dim>>> result(points.size());
     for (unsigned int i = 0; i < points.size(); ++i)
       {
