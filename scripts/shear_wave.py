@@ -193,10 +193,18 @@ def _g(fmt, x):
     return "n/a" if x is None else fmt % x
 
 
-def format_report(r, bound=DEFAULT_BOUND):
-    """Report lines for numdiff: few significant digits, no wall times."""
+def format_report(r, bound=DEFAULT_BOUND, loss_bound=None):
+    """Report lines for numdiff: few significant digits, no wall times.
+    With loss_bound, also a verdict on the amplitude loss per period (the
+    exact solution has none)."""
     ok = r["frequency_error"] is not None and \
         abs(r["frequency_error"]) <= bound
+    verdicts = []
+    if loss_bound is not None:
+        loss_ok = r["loss_per_period"] is not None and \
+            abs(r["loss_per_period"]) <= loss_bound
+        verdicts.append("amplitude loss per period below %g: %s"
+                        % (loss_bound, "yes" if loss_ok else "NO"))
     return [
         "elastic limit (Alpha = 0): %s" % ("yes" if r["alpha"] == 0
                                            else "NO"),
@@ -210,7 +218,7 @@ def format_report(r, bound=DEFAULT_BOUND):
         "energy ratio (kinetic + elastic) end / start: %s"
         % _g("%.2g", r["energy_ratio"]),
         "frequency error below %g: %s" % (bound, "yes" if ok else "NO"),
-    ]
+    ] + verdicts
 
 
 def main(argv=None, prog=None):
@@ -222,6 +230,9 @@ def main(argv=None, prog=None):
     p.add_argument("--bound", type=float, default=DEFAULT_BOUND,
                    help="bound of |frequency error| for the pass line "
                    "(default %(default)s)")
+    p.add_argument("--loss-bound", type=float, default=None,
+                   help="if given, also a pass line for |amplitude loss per "
+                   "period| below this bound")
     args = p.parse_args(argv)
     try:
         r = analyse_run(args.output_dir)
@@ -229,7 +240,7 @@ def main(argv=None, prog=None):
         message = e.args[0] if isinstance(e, KeyError) and e.args else e
         print("%s: error: %s" % (p.prog, message), file=sys.stderr)
         return 1
-    for line in format_report(r, args.bound):
+    for line in format_report(r, args.bound, args.loss_bound):
         print(line)
     return 0
 

@@ -484,6 +484,18 @@ namespace vefs
         "constant over the step, positive definite by construction and "
         "equal to the linear one to first order. The relaxation (alpha > 0) "
         "follows in both cases.");
+      prm.declare_entry(
+        "Stress theta",
+        "1",
+        Patterns::Double(0.5, 1),
+        "Weight theta in [0.5, 1] of the new velocity u in the stress of "
+        "the diffusion step: the stress law sees theta u + (1 - theta) u* "
+        "(u* the advected velocity) and the momentum equation the stress "
+        "theta sigma^{n+1} + (1 - theta) sigma*. 1: the seed's backward "
+        "Euler, which damps elastic oscillations (first order in tau); 0.5: "
+        "the midpoint rule, which keeps the energy of a linear elastic "
+        "oscillation. No effect on Newtonian liquids. See "
+        "doc/bouncing_ball_study.md.");
       prm.declare_entry("Ghost penalty",
                         "0.1",
                         Patterns::Double(0),
@@ -668,6 +680,7 @@ namespace vefs
     stress_update              = prm.get("Stress update") == "linear"
                                    ? StressUpdate::linear
                                    : StressUpdate::exponential;
+    stress_theta               = prm.get_double("Stress theta");
     amg_smoother_sweeps        = prm.get_integer("AMG smoother sweeps");
     prm.leave_subsection();
 

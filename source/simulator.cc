@@ -569,12 +569,30 @@ namespace vefs
       TimerOutput::Scope scope(timer, "velocity extension");
       typename TransportedFields<dim>::VectorType known;
       fields.initialize_vector(known);
+      // With 'Stress theta' < 1 the stress law sees theta u + (1 - theta) u*:
+      // keep u* before the new velocity replaces it.
+      const double theta = rheology.implicit_weight();
+      typename TransportedFields<dim>::VectorType blended_velocity;
+      if (rheology.has_stress() && theta < 1)
+        {
+          fields.initialize_vector(blended_velocity);
+          blended_velocity = fields.fields;
+        }
       flow.copy_velocity_to(fields, known);
       if (rheology.has_stress())
         {
-          TimerOutput::Scope       scope(timer, "4 stress update");
+          TimerOutput::Scope scope(timer, "4 stress update");
+          if (theta < 1)
+            {
+              blended_velocity.sadd(1 - theta, theta, fields.fields);
+              blended_velocity.update_ghost_values();
+            }
           const StressUpdateReport report =
-            update_stress(fields, domain, rheology, tau);
+            update_stress(fields,
+                          theta < 1 ? blended_velocity : fields.fields,
+                          domain,
+                          rheology,
+                          tau);
           statistics.max_velocity_gradient = report.max_velocity_gradient;
           statistics.strain_limited_points = report.strain_limited_points;
         }

@@ -16,7 +16,10 @@ namespace vefs
     , flow_fe(flow_fe)
     , tau(tau)
     , mu(rheology.effective_viscosity(tau))
-    , kept(rheology.stress_factor(tau))
+    , sigma_star_factor(rheology.explicit_stress_factor(tau))
+    , geometric_factor(rheology.geometric_factor(tau))
+    , with_explicit_strain(rheology.has_stress() &&
+                           rheology.implicit_weight() < 1)
     , liquid_values(domain)
     , face_values(flow_fe,
                   QGauss<dim - 1>(2),
@@ -160,17 +163,24 @@ namespace vefs
           if (component[i] == dim)
             pressure_mass(i) += phi_p[i] * JxW / mu;
         Tensor<1, dim> forcing = rho / tau * u_star[q] + rho * gravity;
-        // The explicit part of the stress, k div sigma* (k = kept), is a
-        // force in the strong residual of the pressure stabilisation.
-        Tensor<1, dim> stabilized_forcing = forcing;
+        // The explicit part of the stress, div sigma* times its factor, is
+        // a force in the strong residual of the pressure stabilisation.
+        Tensor<1, dim>          stabilized_forcing = forcing;
+        SymmetricTensor<2, dim> explicit_stress;
         if (with_stress)
           {
-            stabilized_forcing += kept * div_sigma_star[q];
-            // The geometric term 2 k tau (grad u sigma*) : eps(v).
+            stabilized_forcing += sigma_star_factor * div_sigma_star[q];
+            explicit_stress = sigma_star_factor * sigma_star[q];
+            if (with_explicit_strain)
+              explicit_stress +=
+                rheology.explicit_strain_stress(sigma_star[q],
+                                                grad_u_star[q],
+                                                tau);
+            // The geometric term 2 theta^2 k tau (grad u sigma*) : eps(v).
             const Tensor<2, dim> sigma(sigma_star[q]);
             for (unsigned int j = 0; j < n_dofs; ++j)
               if (component[j] < dim)
-                stretching[j] = 2 * kept * tau * grad_u[j] * sigma;
+                stretching[j] = geometric_factor * grad_u[j] * sigma;
           }
         // Only the blocks that can be non-zero: this loop is most of
         // the assembly, in 3D especially.
@@ -209,7 +219,7 @@ namespace vefs
               (forcing * phi_u[i] - tau_K * stabilized_forcing * grad_p[i]) *
               JxW;
             if (with_stress && i_is_u)
-              rhs(i) -= kept * sigma_star[q] * eps_u[i] * JxW;
+              rhs(i) -= explicit_stress * eps_u[i] * JxW;
           }
       }
     // The lumped pressure mass of the liquid part (with the whole cell's,
@@ -265,6 +275,8 @@ namespace vefs
         sigma_star.assign(n_q, SymmetricTensor<2, dim>());
         div_sigma_star.assign(n_q, Tensor<1, dim>());
       }
+    if (with_explicit_strain)
+      grad_u_star.assign(n_q, Tensor<2, dim>());
     for (const unsigned int v : transport_cell->vertex_indices())
       {
         Tensor<1, dim> u;
@@ -283,6 +295,8 @@ namespace vefs
           {
             const double phi = values.shape[q][v];
             u_star[q] += phi * u;
+            if (with_explicit_strain)
+              grad_u_star[q] += outer_product(u, values.gradient[q][v]);
             if (with_stress)
               {
                 sigma_star[q] += phi * sigma;

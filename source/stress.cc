@@ -138,10 +138,11 @@ namespace vefs
 
   template <int dim>
   StressUpdateReport
-  update_stress(TransportedFields<dim>  &fields,
-                const LiquidDomain<dim> &domain,
-                const Rheology<dim>     &rheology,
-                const double             tau)
+  update_stress(TransportedFields<dim>                            &fields,
+                const typename TransportedFields<dim>::VectorType &velocity,
+                const LiquidDomain<dim>                           &domain,
+                const Rheology<dim>                               &rheology,
+                const double                                       tau)
   {
     using VectorType = typename TransportedFields<dim>::VectorType;
     constexpr unsigned int first =
@@ -158,7 +159,7 @@ namespace vefs
                                 fields.fe,
                                 QTrapezoid<dim>(),
                                 update_gradients);
-    const FEValuesExtractors::Vector velocity(0);
+    const FEValuesExtractors::Vector velocity_extractor(0);
     std::vector<Tensor<2, dim>> grad_u(GeometryInfo<dim>::vertices_per_cell);
     LiquidValues<dim>           liquid_values(domain);
     std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
@@ -180,7 +181,7 @@ namespace vefs
               const BoxCellValues<dim> &values = liquid_values.reinit(cell);
               for (const unsigned int v : cell->vertex_indices())
                 for (unsigned int d = 0; d < dim; ++d)
-                  vertex_u[v][d] = fields.fields(cell->vertex_dof_index(v, d));
+                  vertex_u[v][d] = velocity(cell->vertex_dof_index(v, d));
               Tensor<2, dim> mean;
               double         volume = 0;
               for (unsigned int q = 0; q < values.size(); ++q)
@@ -198,8 +199,8 @@ namespace vefs
           else
             {
               vertex_values.reinit(cell);
-              vertex_values[velocity].get_function_gradients(fields.fields,
-                                                             grad_u);
+              vertex_values[velocity_extractor].get_function_gradients(
+                velocity, grad_u);
             }
           const double weight = cell->measure();
           for (const unsigned int v : cell->vertex_indices())
@@ -293,11 +294,13 @@ namespace vefs
 
   template StressUpdateReport
   update_stress<2>(TransportedFields<2> &,
+                   const TransportedFields<2>::VectorType &,
                    const LiquidDomain<2> &,
                    const Rheology<2> &,
                    const double);
   template StressUpdateReport
   update_stress<3>(TransportedFields<3> &,
+                   const TransportedFields<3>::VectorType &,
                    const LiquidDomain<3> &,
                    const Rheology<3> &,
                    const double);

@@ -160,6 +160,8 @@ namespace vefs
     double       ghost_penalty;
     double       free_surface_stabilization;
     StressUpdate stress_update;
+    /** Weight of the new velocity in the stress of the diffusion step. */
+    double       stress_theta;
     unsigned int amg_smoother_sweeps;
 
     std::string prescribed_velocity;

@@ -21,6 +21,16 @@ namespace vefs
    * effective viscosity mu = eta_s + tau eta_p / (lambda + alpha tau), the
    * geometric term 2 k tau (grad u sigma*) : eps(v) and the right-hand side
    * -k sigma* : eps(v). A Newtonian liquid has no stress: mu = eta_s + eta_p.
+   *
+   * With 'Stress theta' = theta < 1 the stress law sees the velocity
+   * u_theta = theta u + (1 - theta) u*, and the momentum equation the stress
+   * theta sigma^{n+1}(u) + (1 - theta) sigma*. For theta = 1/2 this is the
+   * midpoint rule, which keeps the energy of a linear elastic oscillation
+   * that the seed's backward Euler (theta = 1) damps. Written out, the
+   * momentum stress is
+   *   explicit_stress_factor sigma* + theta^2 k tau S(u) + theta (1 - theta)
+   *   k tau S(u*),   S(u) = grad u sigma* + sigma* grad u^T + 2 G eps(u),
+   * so the effective viscosity and the geometric term carry theta^2.
    */
   template <int dim>
   class Rheology
@@ -34,6 +44,7 @@ namespace vefs
       , alpha(parameters.alpha)
       , update(parameters.stress_update)
       , max_strain(parameters.max_strain_per_step)
+      , theta(parameters.stress_theta)
     {
     }
 
@@ -47,8 +58,9 @@ namespace vefs
     double
     effective_viscosity(const double tau) const
     {
-      return has_stress() ? eta_s + tau * eta_p / (lambda + alpha * tau)
-                          : eta_s + eta_p;
+      return has_stress() ?
+               eta_s + theta * theta * tau * eta_p / (lambda + alpha * tau) :
+               eta_s + eta_p;
     }
 
     /** k: how much of the advected stress survives the step. */
@@ -56,6 +68,42 @@ namespace vefs
     stress_factor(const double tau) const
     {
       return has_stress() ? lambda / (lambda + alpha * tau) : 0.;
+    }
+
+    /** The weight theta of the new velocity in the stress law. */
+    double
+    implicit_weight() const
+    {
+      return theta;
+    }
+
+    /** The factor of sigma* in the momentum stress: theta k + 1 - theta. */
+    double
+    explicit_stress_factor(const double tau) const
+    {
+      return has_stress() ? theta * stress_factor(tau) + 1 - theta : 0.;
+    }
+
+    /** The factor 2 theta^2 k tau of the geometric term (grad u sigma*). */
+    double
+    geometric_factor(const double tau) const
+    {
+      return 2 * theta * theta * stress_factor(tau) * tau;
+    }
+
+    /**
+     * The explicit part theta (1 - theta) k tau S(u*) of the momentum stress,
+     * zero for theta = 1.
+     */
+    SymmetricTensor<2, dim>
+    explicit_strain_stress(const SymmetricTensor<2, dim> &advected,
+                           const Tensor<2, dim>          &grad_u_star,
+                           const double                   tau) const
+    {
+      const Tensor<2, dim> stretching = grad_u_star * advected;
+      return theta * (1 - theta) * stress_factor(tau) * tau *
+             (symmetrize(stretching + transpose(stretching)) +
+              (2 * eta_p / lambda) * symmetrize(grad_u_star));
     }
 
     /**
@@ -144,6 +192,7 @@ namespace vefs
     const double       eta_s, eta_p, lambda, alpha;
     const StressUpdate update;
     const double       max_strain;
+    const double       theta;
   };
 } // namespace vefs
 

@@ -101,8 +101,9 @@ namespace vefs
       const double                                          h);
 
     /**
-     * u*, sigma* and div sigma* at the quadrature points of @p values from
-     * the vertex values of the transported fields on @p transport_cell.
+     * u*, sigma* and div sigma* (and grad u* for 'Stress theta' < 1) at the
+     * quadrature points of @p values from the vertex values of the
+     * transported fields on @p transport_cell.
      */
     void
     evaluate_advected_fields(
@@ -125,7 +126,11 @@ namespace vefs
     const FiniteElement<dim>     &flow_fe;
     const double                  tau;
     const double                  mu;
-    const double                  kept;
+    /** The factors of sigma* and of (grad u sigma*) (Rheology). */
+    const double                  sigma_star_factor;
+    const double                  geometric_factor;
+    /** Whether the stress law also sees u* ('Stress theta' < 1). */
+    const bool                    with_explicit_strain;
     Tensor<1, dim>                gravity;
     double                        regularization;
 
@@ -146,6 +151,7 @@ namespace vefs
     std::vector<Tensor<1, dim>>          u_star;
     std::vector<SymmetricTensor<2, dim>> sigma_star;
     std::vector<Tensor<1, dim>>          div_sigma_star;
+    std::vector<Tensor<2, dim>>          grad_u_star;
     std::vector<Tensor<2, dim>>          stretching;
     std::vector<Tensor<1, dim>>          phi_u;
     std::vector<Tensor<2, dim>>          grad_u;

@@ -32,15 +32,19 @@ namespace vefs
    * weighted average of these, so that a liquid at rest keeps its stress
    * exactly. A node outside the liquid may then carry at most a bounded
    * multiple of the stretch of its cells' liquid nodes (stress.cc). Other
-   * nodes keep their values (the extension overwrites them). Returns the
-   * largest velocity gradient it met and how often the strain limiter acted.
+   * nodes keep their values (the extension overwrites them). The velocity
+   * gradient is taken from @p velocity, a vector with the layout of the
+   * fields: the fields themselves, or theta u + (1 - theta) u* for 'Stress
+   * theta' < 1. Returns the largest velocity gradient it met and how often
+   * the strain limiter acted.
    */
   template <int dim>
   StressUpdateReport
-  update_stress(TransportedFields<dim>  &fields,
-                const LiquidDomain<dim> &domain,
-                const Rheology<dim>     &rheology,
-                const double             tau);
+  update_stress(TransportedFields<dim>                            &fields,
+                const typename TransportedFields<dim>::VectorType &velocity,
+                const LiquidDomain<dim>                           &domain,
+                const Rheology<dim>                               &rheology,
+                const double                                       tau);
 
   /** What the statistics report of the stress. */
   struct StressMeasure
