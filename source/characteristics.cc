@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi_remote_point_evaluation.h>
 
 #include <vefs/characteristics.h>
-#include <vefs/level_set_hermite.h>
+#include <vefs/field_hermite.h>
 #include <vefs/nodal_gradients.h>
 
 namespace vefs
@@ -25,7 +25,7 @@ namespace vefs
     struct Interpolation
     {
       /** The level set by this Hermite interpolation, if not null. */
-      const LevelSetHermite<dim> *hermite = nullptr;
+      const FieldHermite<dim> *hermite = nullptr;
       bool                        limited = false;
       /** Extras: the gradient of the (Hermite) level set. */
       bool level_set_gradient = false;
@@ -253,7 +253,7 @@ namespace vefs
     Interpolation<dim>
     level_set_interpolation(const TransportedFields<dim> &fields,
                             const LevelSetInterpolation   interpolation,
-                            LevelSetHermite<dim>         &hermite)
+                            FieldHermite<dim>         &hermite)
     {
       Interpolation<dim> how;
       if (interpolation == LevelSetInterpolation::linear)
@@ -332,7 +332,7 @@ namespace vefs
         points[i]         = locator.fold_into_cavity(feet[i]);
       }
 
-    LevelSetHermite<dim> hermite;
+    FieldHermite<dim> hermite;
     auto                 at_feet =
       evaluate_at(points,
                   fields,
@@ -420,7 +420,7 @@ namespace vefs
   {
     const bool gradient_augmented =
       interpolation == LevelSetInterpolation::gradient_augmented;
-    LevelSetHermite<dim> hermite;
+    FieldHermite<dim> hermite;
     const auto           values =
       evaluate_at(points,
                   fields,

@@ -2,7 +2,7 @@
 #include <deal.II/distributed/solution_transfer.h>
 
 #include <vefs/box_q1_values.h>
-#include <vefs/level_set_hermite.h>
+#include <vefs/field_hermite.h>
 #include <vefs/mesh_adaptation.h>
 
 namespace vefs
@@ -187,7 +187,7 @@ namespace vefs
 
       parallel::distributed::Triangulation<dim> &mesh;
       const bool                                 limited;
-      LevelSetHermite<dim>                       hermite;
+      FieldHermite<dim>                       hermite;
       unsigned int                               handle;
     };
   } // namespace

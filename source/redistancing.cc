@@ -2,7 +2,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <vefs/box_mesh_locator.h>
-#include <vefs/level_set_hermite.h>
+#include <vefs/field_hermite.h>
 #include <vefs/redistancing.h>
 
 #include <functional>
@@ -78,7 +78,7 @@ namespace vefs
   redistance(TransportedFields<dim>     &fields,
              const LevelSetInterpolation interpolation)
   {
-    LevelSetHermite<dim> hermite;
+    FieldHermite<dim> hermite;
     const bool           cubic = interpolation != LevelSetInterpolation::linear;
     if (cubic)
       hermite.recover(fields,

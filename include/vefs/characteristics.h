@@ -23,7 +23,7 @@ namespace vefs
    * on other MPI ranks RemotePointEvaluation does. Feet outside the cavity
    * are moved back onto its walls, or wrapped around periodic walls.
    * The level set is interpolated at the feet as @p interpolation says
-   * (LevelSetHermite for the cubic ones), the other fields linearly (Q1).
+   * (FieldHermite for the cubic ones), the other fields linearly (Q1).
    */
   template <int dim>
   void

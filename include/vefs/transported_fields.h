@@ -125,7 +125,7 @@ namespace vefs
     VectorType                fields;
     /**
      * The gradient of the level set, carried along the characteristics with
-     * it by the gradient-augmented transport (LevelSetHermite): same layout
+     * it by the gradient-augmented transport (FieldHermite): same layout
      * as @p fields, the derivative in direction d in the slot of velocity
      * component d (the other slots are unused).
      */

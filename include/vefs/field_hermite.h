@@ -1,5 +1,5 @@
-#ifndef vefs_level_set_hermite_h
-#define vefs_level_set_hermite_h
+#ifndef vefs_field_hermite_h
+#define vefs_field_hermite_h
 
 #include <vefs/transported_fields.h>
 
@@ -8,8 +8,9 @@
 namespace vefs
 {
   /**
-   * Cubic Hermite interpolation of the level set inside a cell, for the
-   * values at the feet of the characteristics. Linear interpolation there
+   * Cubic Hermite interpolation of a transported field inside a cell, for
+   * the values at the feet of the characteristics: the level set, and
+   * optionally the flow fields. Linear interpolation there
    * loses O(h^2) per step, so the shape error grows like h^2/tau as the step
    * shrinks; the tensor-product cubic Hermite interpolant needs the nodal
    * derivatives d^|S| psi / prod_{d in S} dx_d, S a nonempty set of
@@ -29,7 +30,7 @@ namespace vefs
    * The interpolant is continuous across cells.
    */
   template <int dim>
-  class LevelSetHermite
+  class FieldHermite
   {
   public:
     /** Sets S are bit masks 1 .. 2^dim - 1; derivative S is stored at S-1. */

@@ -1,4 +1,4 @@
-#include <vefs/level_set_hermite.h>
+#include <vefs/field_hermite.h>
 
 #include <algorithm>
 
@@ -45,7 +45,7 @@ namespace vefs
 
   template <int dim>
   void
-  LevelSetHermite<dim>::recover(const TransportedFields<dim> &fields,
+  FieldHermite<dim>::recover(const TransportedFields<dim> &fields,
                                 const bool                    advected_gradient)
   {
     constexpr unsigned int c = TransportedFields<dim>::level_set_component;
@@ -116,7 +116,7 @@ namespace vefs
 
   template <int dim>
   double
-  LevelSetHermite<dim>::value(
+  FieldHermite<dim>::value(
     const TransportedFields<dim>                         &fields,
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const Point<dim>                                     &xi,
@@ -176,6 +176,6 @@ namespace vefs
     return limited ? std::clamp(value, lower, upper) : value;
   }
 
-  template class LevelSetHermite<2>;
-  template class LevelSetHermite<3>;
+  template class FieldHermite<2>;
+  template class FieldHermite<3>;
 } // namespace vefs
