@@ -4,6 +4,8 @@
 #include <vefs/field_hermite.h>
 #include <vefs/nodal_gradients.h>
 
+#include <numeric>
+
 namespace vefs
 {
   namespace
@@ -35,6 +37,9 @@ namespace vefs
        */
       const std::array<typename TransportedFields<dim>::VectorType, dim>
         *velocity_gradient = nullptr;
+      /** The velocity by this Hermite interpolation, if not null. */
+      const FieldHermite<dim> *velocity_hermite = nullptr;
+      bool                     velocity_limited = false;
     };
 
     /**
@@ -70,6 +75,10 @@ namespace vefs
                   weight *
                   (*how.velocity_gradient)[j](dof_cell->vertex_dof_index(v, i));
           }
+      if (how.velocity_hermite)
+        for (unsigned int d = 0; d < dim; ++d)
+          values[d] = how.velocity_hermite->component_value(
+            fields, dof_cell, xi, d, how.velocity_limited);
       if (how.hermite)
         {
           Tensor<1, dim> gradient;
@@ -273,7 +282,8 @@ namespace vefs
   advect_along_characteristics(TransportedFields<dim>     &fields,
                                const double                tau,
                                const BoxMeshLocator<dim>  &locator,
-                               const LevelSetInterpolation interpolation)
+                               const LevelSetInterpolation interpolation,
+                               const VelocityInterpolation velocity_interpolation)
   {
     const auto &nodes = fields.nodes();
 
@@ -333,11 +343,17 @@ namespace vefs
       }
 
     FieldHermite<dim> hermite;
-    auto                 at_feet =
-      evaluate_at(points,
-                  fields,
-                  locator,
-                  level_set_interpolation(fields, interpolation, hermite));
+    auto how = level_set_interpolation(fields, interpolation, hermite);
+    if (velocity_interpolation != VelocityInterpolation::linear)
+      {
+        std::vector<unsigned int> velocity(dim);
+        std::iota(velocity.begin(), velocity.end(), 0u);
+        hermite.recover_components(fields, velocity);
+        how.velocity_hermite = &hermite;
+        how.velocity_limited =
+          velocity_interpolation == VelocityInterpolation::limited_cubic;
+      }
+    auto at_feet = evaluate_at(points, fields, locator, how);
     // Liquid that leaves a contact wall leaves empty space behind: a foot
     // beyond the wall is that far outside the liquid.
     for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -460,10 +476,12 @@ namespace vefs
   advect_along_characteristics<2>(TransportedFields<2> &,
                                   const double,
                                   const BoxMeshLocator<2> &,
-                                  const LevelSetInterpolation);
+                                  const LevelSetInterpolation,
+                                  const VelocityInterpolation);
   template void
   advect_along_characteristics<3>(TransportedFields<3> &,
                                   const double,
                                   const BoxMeshLocator<3> &,
-                                  const LevelSetInterpolation);
+                                  const LevelSetInterpolation,
+                                  const VelocityInterpolation);
 } // namespace vefs

@@ -115,6 +115,57 @@ namespace vefs
   }
 
   template <int dim>
+  void
+  FieldHermite<dim>::recover_components(
+    const TransportedFields<dim>    &fields,
+    const std::vector<unsigned int> &components)
+  {
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    typename TransportedFields<dim>::VectorType n_cells;
+    fields.initialize_vector(n_cells);
+    // Only this function's sums may travel in compress(): the ghost entries
+    // (the level set's derivatives, if recovered) are zeroed first.
+    for (auto &derivative : derivatives)
+      if (derivative.size() == 0)
+        fields.initialize_vector(derivative);
+      else
+        derivative.zero_out_ghost_values();
+
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const Tensor<1, dim> h = extents<dim>(cell);
+          for (const unsigned int c : components)
+            {
+              std::array<double, n_vertices>                  values;
+              std::array<types::global_dof_index, n_vertices> dofs;
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  dofs[v]   = cell->vertex_dof_index(v, c);
+                  values[v] = fields.fields(dofs[v]);
+                }
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  n_cells(dofs[v]) += 1;
+                  for (unsigned int s = 1; s <= n_derivatives; ++s)
+                    derivatives[s - 1](dofs[v]) +=
+                      q1_derivative<dim>(values, h, v, s);
+                }
+            }
+        }
+
+    n_cells.compress(VectorOperation::add);
+    for (auto &derivative : derivatives)
+      {
+        derivative.compress(VectorOperation::add);
+        for (unsigned int i = 0; i < derivative.locally_owned_size(); ++i)
+          if (n_cells.local_element(i) > 0)
+            derivative.local_element(i) /= n_cells.local_element(i);
+        derivative.update_ghost_values();
+      }
+  }
+
+  template <int dim>
   double
   FieldHermite<dim>::value(
     const TransportedFields<dim>                         &fields,
@@ -123,8 +174,37 @@ namespace vefs
     const bool                                            limited,
     Tensor<1, dim>                                       *gradient) const
   {
-    constexpr unsigned int c = TransportedFields<dim>::level_set_component;
-    const Tensor<1, dim>   h = extents<dim>(cell);
+    return interpolate(fields,
+                       cell,
+                       xi,
+                       TransportedFields<dim>::level_set_component,
+                       limited,
+                       gradient);
+  }
+
+  template <int dim>
+  double
+  FieldHermite<dim>::component_value(
+    const TransportedFields<dim>                         &fields,
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const Point<dim>                                     &xi,
+    const unsigned int                                    component,
+    const bool                                            limited) const
+  {
+    return interpolate(fields, cell, xi, component, limited, nullptr);
+  }
+
+  template <int dim>
+  double
+  FieldHermite<dim>::interpolate(
+    const TransportedFields<dim>                         &fields,
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const Point<dim>                                     &xi,
+    const unsigned int                                    c,
+    const bool                                            limited,
+    Tensor<1, dim>                                       *gradient) const
+  {
+    const Tensor<1, dim> h = extents<dim>(cell);
 
     // One-dimensional cubic Hermite basis in direction d: basis[d][k][side]
     // with k = 0 the value function and k = 1 the slope function (scaled to
@@ -152,12 +232,12 @@ namespace vefs
     for (const unsigned int v : cell->vertex_indices())
       {
         const auto   dof   = cell->vertex_dof_index(v, c);
-        const double psi_v = fields.fields(dof);
-        lower              = std::min(lower, psi_v);
-        upper              = std::max(upper, psi_v);
+        const double f_v = fields.fields(dof);
+        lower            = std::min(lower, f_v);
+        upper            = std::max(upper, f_v);
         for (unsigned int s = 0; s <= n_derivatives; ++s)
           {
-            const double nodal  = s == 0 ? psi_v : derivatives[s - 1](dof);
+            const double nodal  = s == 0 ? f_v : derivatives[s - 1](dof);
             double       weight = 1;
             for (unsigned int d = 0; d < dim; ++d)
               weight *= basis[d][(s >> d) & 1][(v >> d) & 1];

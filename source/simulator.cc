@@ -459,7 +459,8 @@ namespace vefs
           advect_along_characteristics(fields,
                                        tau,
                                        *locator,
-                                       parameters.level_set_interpolation);
+                                       parameters.level_set_interpolation,
+                                       parameters.velocity_interpolation);
           if (level_set_history.enabled())
             {
               level_set_history.compose(fields,

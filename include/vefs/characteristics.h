@@ -23,14 +23,17 @@ namespace vefs
    * on other MPI ranks RemotePointEvaluation does. Feet outside the cavity
    * are moved back onto its walls, or wrapped around periodic walls.
    * The level set is interpolated at the feet as @p interpolation says
-   * (FieldHermite for the cubic ones), the other fields linearly (Q1).
+   * (FieldHermite for the cubic ones), the velocity as
+   * @p velocity_interpolation says, the stress linearly (Q1).
    */
   template <int dim>
   void
-  advect_along_characteristics(TransportedFields<dim>     &fields,
-                               const double                tau,
-                               const BoxMeshLocator<dim>  &locator,
-                               const LevelSetInterpolation interpolation);
+  advect_along_characteristics(
+    TransportedFields<dim>     &fields,
+    const double                tau,
+    const BoxMeshLocator<dim>  &locator,
+    const LevelSetInterpolation interpolation,
+    const VelocityInterpolation velocity_interpolation);
 
   /**
    * One step of the trace above for arbitrary @p points (four stages, in

@@ -37,11 +37,20 @@ namespace vefs
     static constexpr unsigned int n_derivatives = (1u << dim) - 1;
 
     /**
-     * Make the nodal derivatives from the (ghosted) fields; with
-     * @p advected_gradient from the level set gradient of @p fields.
+     * Make the nodal derivatives of the level set from the (ghosted) fields;
+     * with @p advected_gradient from the level set gradient of @p fields.
      */
     void
     recover(const TransportedFields<dim> &fields, const bool advected_gradient);
+
+    /**
+     * Also make the nodal derivatives of @p components (not the level set)
+     * from their Q1 values, for component_value(); after recover(), whose
+     * level set derivatives stay.
+     */
+    void
+    recover_components(const TransportedFields<dim>    &fields,
+                       const std::vector<unsigned int> &components);
 
     /**
      * The level set at the unit-cell point @p xi of @p cell (locally owned
@@ -56,7 +65,23 @@ namespace vefs
           const bool                                            limited,
           Tensor<1, dim> *gradient = nullptr) const;
 
+    /** Like value(), for a component of recover_components(). */
+    double
+    component_value(const TransportedFields<dim>                         &fields,
+                    const typename DoFHandler<dim>::active_cell_iterator &cell,
+                    const Point<dim>                                     &xi,
+                    const unsigned int component,
+                    const bool         limited) const;
+
   private:
+    double
+    interpolate(const TransportedFields<dim>                         &fields,
+                const typename DoFHandler<dim>::active_cell_iterator &cell,
+                const Point<dim>                                     &xi,
+                const unsigned int                                    component,
+                const bool                                            limited,
+                Tensor<1, dim> *gradient) const;
+
     std::array<typename TransportedFields<dim>::VectorType, n_derivatives>
       derivatives;
   };

@@ -52,6 +52,14 @@ namespace vefs
   };
 
   /** How the level set is interpolated at the feet of the characteristics. */
+  /** How the velocity is interpolated at the feet of the characteristics. */
+  enum class VelocityInterpolation
+  {
+    linear,
+    cubic,
+    limited_cubic
+  };
+
   enum class LevelSetInterpolation
   {
     linear,
@@ -153,6 +161,7 @@ namespace vefs
     /** Finest cells the surface moves between remaps; 0: every step. */
     double                remap_distance;
     LevelSetInterpolation level_set_interpolation;
+    VelocityInterpolation velocity_interpolation;
 
     double       solver_tolerance;
     unsigned int solver_max_iterations;
