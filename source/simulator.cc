@@ -600,21 +600,31 @@ namespace vefs
       const unsigned int layers =
         std::max<unsigned int>(parameters.extension_layers,
                                std::ceil(expected_cfl) + 2);
-      if (parameters.extend_outside_velocity)
+      // The vertices of cut cells outside the liquid keep the flow step's
+      // velocity and the updated stress, or take the extension ('Outside
+      // velocity/stress of cut cells').
+      const bool extend_stress =
+        fields.has_stress() && parameters.extend_outside_stress;
+      if (parameters.extend_outside_velocity == extend_stress)
         {
-          // The stress keeps its values at all vertices of the cut cells,
-          // the velocity at the liquid ones only.
-          auto known_stress = known;
+          if (extend_stress)
+            unflag_nodes_outside_liquid(fields, known);
+          extend_flow_fields(fields, known, layers, flow_components(fields));
+        }
+      else
+        {
+          auto known_outside_too = known;
           unflag_nodes_outside_liquid(fields, known);
-          extend_flow_fields(fields, known, layers, velocity_components<dim>());
+          extend_flow_fields(fields,
+                             extend_stress ? known_outside_too : known,
+                             layers,
+                             velocity_components<dim>());
           if (fields.has_stress())
             extend_flow_fields(fields,
-                               known_stress,
+                               extend_stress ? known : known_outside_too,
                                layers,
                                stress_components(fields));
         }
-      else
-        extend_flow_fields(fields, known, layers, flow_components(fields));
     }
   }
 

@@ -156,6 +156,8 @@ namespace vefs
      * velocity instead of the flow step's ('Outside velocity of cut cells').
      */
     bool         extend_outside_velocity;
+    /** Whether they take the extended stress ('Outside stress of cut cells'). */
+    bool         extend_outside_stress;
     bool         volume_correction;
     unsigned int redistancing_interval;
     /** Finest cells the surface moves between remaps; 0: every step. */
