@@ -4,8 +4,6 @@
 #include <vefs/field_hermite.h>
 #include <vefs/nodal_gradients.h>
 
-#include <numeric>
-
 namespace vefs
 {
   namespace
@@ -40,6 +38,12 @@ namespace vefs
       /** The velocity by this Hermite interpolation, if not null. */
       const FieldHermite<dim> *velocity_hermite = nullptr;
       bool                     velocity_limited = false;
+      /**
+       * The stress by this limited Hermite interpolation, if not null, where
+       * it keeps c = I + sigma / G (G = shear_modulus) positive definite.
+       */
+      const FieldHermite<dim> *stress_hermite = nullptr;
+      double                   shear_modulus = 1;
     };
 
     /**
@@ -79,6 +83,31 @@ namespace vefs
         for (unsigned int d = 0; d < dim; ++d)
           values[d] = how.velocity_hermite->component_value(
             fields, dof_cell, xi, d, how.velocity_limited);
+      if (how.stress_hermite)
+        {
+          constexpr unsigned int first =
+            TransportedFields<dim>::first_stress_component;
+          SymmetricTensor<2, dim> linear, cubic;
+          for (unsigned int i = 0;
+               i < TransportedFields<dim>::n_stress_components;
+               ++i)
+            {
+              linear.access_raw_entry(i) = values[first + i];
+              cubic.access_raw_entry(i) = how.stress_hermite->component_value(
+                fields, dof_cell, xi, first + i, true);
+            }
+          const auto smallest = [&](const SymmetricTensor<2, dim> &sigma) {
+            return eigenvalues(unit_symmetric_tensor<dim>() +
+                               sigma / how.shear_modulus)[dim - 1];
+          };
+          // The cubic stress only where c keeps at least half the smallest
+          // eigenvalue of the linear (convex) one.
+          if (smallest(cubic) >= 0.5 * smallest(linear))
+            for (unsigned int i = 0;
+                 i < TransportedFields<dim>::n_stress_components;
+                 ++i)
+              values[first + i] = cubic.access_raw_entry(i);
+        }
       if (how.hermite)
         {
           Tensor<1, dim> gradient;
@@ -279,16 +308,15 @@ namespace vefs
 
   template <int dim>
   void
-  advect_along_characteristics(TransportedFields<dim>     &fields,
-                               const double                tau,
-                               const BoxMeshLocator<dim>  &locator,
-                               const LevelSetInterpolation interpolation,
-                               const VelocityInterpolation velocity_interpolation)
+  advect_along_characteristics(TransportedFields<dim>  &fields,
+                               const double             tau,
+                               const BoxMeshLocator<dim> &locator,
+                               const FootInterpolation &interpolation)
   {
     const auto &nodes = fields.nodes();
 
     const bool gradient_augmented =
-      interpolation == LevelSetInterpolation::gradient_augmented;
+      interpolation.level_set == LevelSetInterpolation::gradient_augmented;
 
     std::vector<Point<dim>> points(nodes.size());
     // The feet, and with the gradient augmented level set J = dX/dx.
@@ -343,16 +371,29 @@ namespace vefs
       }
 
     FieldHermite<dim> hermite;
-    auto how = level_set_interpolation(fields, interpolation, hermite);
-    if (velocity_interpolation != VelocityInterpolation::linear)
+    auto how =
+      level_set_interpolation(fields, interpolation.level_set, hermite);
+    std::vector<unsigned int> cubic_components;
+    if (interpolation.velocity != VelocityInterpolation::linear)
       {
-        std::vector<unsigned int> velocity(dim);
-        std::iota(velocity.begin(), velocity.end(), 0u);
-        hermite.recover_components(fields, velocity);
+        for (unsigned int d = 0; d < dim; ++d)
+          cubic_components.push_back(d);
         how.velocity_hermite = &hermite;
         how.velocity_limited =
-          velocity_interpolation == VelocityInterpolation::limited_cubic;
+          interpolation.velocity == VelocityInterpolation::limited_cubic;
       }
+    if (interpolation.cubic_stress && fields.has_stress())
+      {
+        for (unsigned int i = 0;
+             i < TransportedFields<dim>::n_stress_components;
+             ++i)
+          cubic_components.push_back(
+            TransportedFields<dim>::first_stress_component + i);
+        how.stress_hermite = &hermite;
+        how.shear_modulus = interpolation.shear_modulus;
+      }
+    if (!cubic_components.empty())
+      hermite.recover_components(fields, cubic_components);
     auto at_feet = evaluate_at(points, fields, locator, how);
     // Liquid that leaves a contact wall leaves empty space behind: a foot
     // beyond the wall is that far outside the liquid.
@@ -476,12 +517,10 @@ namespace vefs
   advect_along_characteristics<2>(TransportedFields<2> &,
                                   const double,
                                   const BoxMeshLocator<2> &,
-                                  const LevelSetInterpolation,
-                                  const VelocityInterpolation);
+                                  const FootInterpolation &);
   template void
   advect_along_characteristics<3>(TransportedFields<3> &,
                                   const double,
                                   const BoxMeshLocator<3> &,
-                                  const LevelSetInterpolation,
-                                  const VelocityInterpolation);
+                                  const FootInterpolation &);
 } // namespace vefs

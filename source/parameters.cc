@@ -444,14 +444,25 @@ namespace vefs
         Patterns::Selection("linear|cubic|limited cubic"),
         "How the velocity is interpolated at the feet of the "
         "characteristics: linear (Q1), which damps a velocity field that "
-        "varies within a few cells (a numerical viscosity of about h |u| / 2 "
-        "per step); cubic (tensor-product cubic Hermite with nodal "
-        "derivatives recovered from the Q1 field); limited cubic (cubic "
-        "clipped to the range of the cell's nodal values: no new extrema). "
-        "2D stiff ball, h = 1.56 mm: 17 % of the energy lost in the bounce "
-        "with linear, 1 % with limited cubic and 'Solver/Stress theta' = "
-        "0.5 (doc/bouncing_ball_study.md). The stress stays linear: the "
-        "cubic one loses the positive definiteness of B at an impact.");
+        "varies within a few cells (its error acts as a viscosity of order "
+        "h |u|); cubic (tensor-product cubic Hermite with nodal derivatives "
+        "recovered from the Q1 field); limited cubic (cubic clipped to the "
+        "range of the cell's nodal values: no new extrema). Measured on the "
+        "2D stiff ball in doc/bouncing_ball_study.md.");
+      prm.declare_entry(
+        "Stress interpolation",
+        "linear",
+        Patterns::Selection("linear|limited cubic"),
+        "How the stress is interpolated at the feet of the characteristics: "
+        "linear (Q1: a convex combination, so the conformation tensor c = "
+        "I + lambda sigma / eta_p stays positive definite, but an elastic "
+        "body's stress is damped as its velocity is by linear velocity "
+        "interpolation) or limited cubic (each component by limited cubic "
+        "Hermite interpolation, kept only where the smallest eigenvalue of "
+        "c is at least half that of the linear one, else linear; "
+        "unsafeguarded, the 2D stiff ball lost positive definiteness at the "
+        "impact and blew up). Measured on the 2D stiff ball in "
+        "doc/bouncing_ball_study.md.");
       prm.declare_entry("Volume correction",
                         "true",
                         Patterns::Bool(),
@@ -699,6 +710,8 @@ namespace vefs
                                   ? LevelSetInterpolation::limited_cubic
                                   : LevelSetInterpolation::gradient_augmented;
     }
+    cubic_stress_interpolation =
+      prm.get("Stress interpolation") == "limited cubic";
     {
       const std::string name = prm.get("Velocity interpolation");
       velocity_interpolation = name == "linear" ? VelocityInterpolation::linear

@@ -459,8 +459,7 @@ namespace vefs
           advect_along_characteristics(fields,
                                        tau,
                                        *locator,
-                                       parameters.level_set_interpolation,
-                                       parameters.velocity_interpolation);
+                                       FootInterpolation(parameters));
           if (level_set_history.enabled())
             {
               level_set_history.compose(fields,

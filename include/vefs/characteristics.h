@@ -4,6 +4,7 @@
 #include <deal.II/base/bounding_box.h>
 
 #include <vefs/box_mesh_locator.h>
+#include <vefs/parameters.h>
 #include <vefs/transported_fields.h>
 
 #include <array>
@@ -12,6 +13,26 @@
 
 namespace vefs
 {
+  /** How each field is interpolated at the feet of the characteristics. */
+  struct FootInterpolation
+  {
+    LevelSetInterpolation level_set = LevelSetInterpolation::linear;
+    VelocityInterpolation velocity  = VelocityInterpolation::linear;
+    /** Limited cubic stress, where c = I + sigma / G stays positive. */
+    bool   cubic_stress = false;
+    double shear_modulus = 1;
+
+    explicit FootInterpolation(const Parameters &parameters)
+      : level_set(parameters.level_set_interpolation)
+      , velocity(parameters.velocity_interpolation)
+      , cubic_stress(parameters.cubic_stress_interpolation &&
+                     parameters.regime() != Regime::newtonian)
+      , shear_modulus(cubic_stress ? parameters.polymer_viscosity /
+                                       parameters.relaxation_time :
+                                     1.)
+    {}
+  };
+
   /**
    * Advection step of the splitting (design section 2, step 1): every field
    * takes at a node x its old value at the foot of the characteristic,
@@ -22,18 +43,15 @@ namespace vefs
    * cells away: in the local part of the mesh the locator finds their cell,
    * on other MPI ranks RemotePointEvaluation does. Feet outside the cavity
    * are moved back onto its walls, or wrapped around periodic walls.
-   * The level set is interpolated at the feet as @p interpolation says
-   * (FieldHermite for the cubic ones), the velocity as
-   * @p velocity_interpolation says, the stress linearly (Q1).
+   * The fields are interpolated at the feet as @p interpolation says
+   * (FieldHermite for the cubic ones).
    */
   template <int dim>
   void
-  advect_along_characteristics(
-    TransportedFields<dim>     &fields,
-    const double                tau,
-    const BoxMeshLocator<dim>  &locator,
-    const LevelSetInterpolation interpolation,
-    const VelocityInterpolation velocity_interpolation);
+  advect_along_characteristics(TransportedFields<dim>       &fields,
+                               const double                  tau,
+                               const BoxMeshLocator<dim>    &locator,
+                               const FootInterpolation      &interpolation);
 
   /**
    * One step of the trace above for arbitrary @p points (four stages, in

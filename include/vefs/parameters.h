@@ -164,6 +164,8 @@ namespace vefs
     double                remap_distance;
     LevelSetInterpolation level_set_interpolation;
     VelocityInterpolation velocity_interpolation;
+    /** The stress at the feet by limited cubic ('Stress interpolation'). */
+    bool cubic_stress_interpolation;
 
     double       solver_tolerance;
     unsigned int solver_max_iterations;
