@@ -26,7 +26,7 @@ namespace vefs
     {
       /** The level set by this Hermite interpolation, if not null. */
       const FieldHermite<dim> *hermite = nullptr;
-      bool                        limited = false;
+      bool                     limited = false;
       /** Extras: the gradient of the (Hermite) level set. */
       bool level_set_gradient = false;
       /**
@@ -43,7 +43,7 @@ namespace vefs
        * it keeps c = I + sigma / G (G = shear_modulus) positive definite.
        */
       const FieldHermite<dim> *stress_hermite = nullptr;
-      double                   shear_modulus = 1;
+      double                   shear_modulus  = 1;
     };
 
     /**
@@ -81,8 +81,12 @@ namespace vefs
           }
       if (how.velocity_hermite)
         for (unsigned int d = 0; d < dim; ++d)
-          values[d] = how.velocity_hermite->component_value(
-            fields, dof_cell, xi, d, how.velocity_limited);
+          values[d] =
+            how.velocity_hermite->component_value(fields,
+                                                  dof_cell,
+                                                  xi,
+                                                  d,
+                                                  how.velocity_limited);
       if (how.stress_hermite)
         {
           constexpr unsigned int first =
@@ -93,8 +97,12 @@ namespace vefs
                ++i)
             {
               linear.access_raw_entry(i) = values[first + i];
-              cubic.access_raw_entry(i) = how.stress_hermite->component_value(
-                fields, dof_cell, xi, first + i, true);
+              cubic.access_raw_entry(i) =
+                how.stress_hermite->component_value(fields,
+                                                    dof_cell,
+                                                    xi,
+                                                    first + i,
+                                                    true);
             }
           const auto smallest = [&](const SymmetricTensor<2, dim> &sigma) {
             return eigenvalues(unit_symmetric_tensor<dim>() +
@@ -291,7 +299,7 @@ namespace vefs
     Interpolation<dim>
     level_set_interpolation(const TransportedFields<dim> &fields,
                             const LevelSetInterpolation   interpolation,
-                            FieldHermite<dim>         &hermite)
+                            FieldHermite<dim>            &hermite)
     {
       Interpolation<dim> how;
       if (interpolation == LevelSetInterpolation::linear)
@@ -308,10 +316,10 @@ namespace vefs
 
   template <int dim>
   void
-  advect_along_characteristics(TransportedFields<dim>  &fields,
-                               const double             tau,
+  advect_along_characteristics(TransportedFields<dim>    &fields,
+                               const double               tau,
                                const BoxMeshLocator<dim> &locator,
-                               const FootInterpolation &interpolation)
+                               const FootInterpolation   &interpolation)
   {
     const auto &nodes = fields.nodes();
 
@@ -371,7 +379,7 @@ namespace vefs
       }
 
     FieldHermite<dim> hermite;
-    auto how =
+    auto              how =
       level_set_interpolation(fields, interpolation.level_set, hermite);
     std::vector<unsigned int> cubic_components;
     if (interpolation.velocity != VelocityInterpolation::linear)
@@ -390,7 +398,7 @@ namespace vefs
           cubic_components.push_back(
             TransportedFields<dim>::first_stress_component + i);
         how.stress_hermite = &hermite;
-        how.shear_modulus = interpolation.shear_modulus;
+        how.shear_modulus  = interpolation.shear_modulus;
       }
     if (!cubic_components.empty())
       hermite.recover_components(fields, cubic_components);
@@ -478,7 +486,7 @@ namespace vefs
     const bool gradient_augmented =
       interpolation == LevelSetInterpolation::gradient_augmented;
     FieldHermite<dim> hermite;
-    const auto           values =
+    const auto        values =
       evaluate_at(points,
                   fields,
                   locator,

@@ -46,7 +46,7 @@ namespace vefs
   template <int dim>
   void
   FieldHermite<dim>::recover(const TransportedFields<dim> &fields,
-                                const bool                    advected_gradient)
+                             const bool                    advected_gradient)
   {
     constexpr unsigned int c = TransportedFields<dim>::level_set_component;
     constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
@@ -231,7 +231,7 @@ namespace vefs
       *gradient = Tensor<1, dim>();
     for (const unsigned int v : cell->vertex_indices())
       {
-        const auto   dof   = cell->vertex_dof_index(v, c);
+        const auto   dof = cell->vertex_dof_index(v, c);
         const double f_v = fields.fields(dof);
         lower            = std::min(lower, f_v);
         upper            = std::max(upper, f_v);

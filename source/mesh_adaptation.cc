@@ -187,7 +187,7 @@ namespace vefs
 
       parallel::distributed::Triangulation<dim> &mesh;
       const bool                                 limited;
-      FieldHermite<dim>                       hermite;
+      FieldHermite<dim>                          hermite;
       unsigned int                               handle;
     };
   } // namespace

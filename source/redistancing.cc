@@ -79,7 +79,7 @@ namespace vefs
              const LevelSetInterpolation interpolation)
   {
     FieldHermite<dim> hermite;
-    const bool           cubic = interpolation != LevelSetInterpolation::linear;
+    const bool        cubic = interpolation != LevelSetInterpolation::linear;
     if (cubic)
       hermite.recover(fields,
                       interpolation ==

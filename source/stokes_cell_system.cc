@@ -172,10 +172,9 @@ namespace vefs
             stabilized_forcing += sigma_star_factor * div_sigma_star[q];
             explicit_stress = sigma_star_factor * sigma_star[q];
             if (with_explicit_strain)
-              explicit_stress +=
-                rheology.explicit_strain_stress(sigma_star[q],
-                                                grad_u_star[q],
-                                                tau);
+              explicit_stress += rheology.explicit_strain_stress(sigma_star[q],
+                                                                 grad_u_star[q],
+                                                                 tau);
             // The geometric term 2 theta^2 k tau (grad u sigma*) : eps(v).
             const Tensor<2, dim> sigma(sigma_star[q]);
             for (unsigned int j = 0; j < n_dofs; ++j)

@@ -199,8 +199,8 @@ namespace vefs
           else
             {
               vertex_values.reinit(cell);
-              vertex_values[velocity_extractor].get_function_gradients(
-                velocity, grad_u);
+              vertex_values[velocity_extractor].get_function_gradients(velocity,
+                                                                       grad_u);
             }
           const double weight = cell->measure();
           for (const unsigned int v : cell->vertex_indices())

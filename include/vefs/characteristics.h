@@ -19,7 +19,7 @@ namespace vefs
     LevelSetInterpolation level_set = LevelSetInterpolation::linear;
     VelocityInterpolation velocity  = VelocityInterpolation::linear;
     /** Limited cubic stress, where c = I + sigma / G stays positive. */
-    bool   cubic_stress = false;
+    bool   cubic_stress  = false;
     double shear_modulus = 1;
 
     explicit FootInterpolation(const Parameters &parameters)
@@ -28,9 +28,10 @@ namespace vefs
       , cubic_stress(parameters.cubic_stress_interpolation &&
                      parameters.regime() != Regime::newtonian)
       , shear_modulus(cubic_stress ? parameters.polymer_viscosity /
-                                       parameters.relaxation_time :
-                                     1.)
-    {}
+                                       parameters.relaxation_time
+                                   : 1.)
+    {
+    }
   };
 
   /**
@@ -48,10 +49,10 @@ namespace vefs
    */
   template <int dim>
   void
-  advect_along_characteristics(TransportedFields<dim>       &fields,
-                               const double                  tau,
-                               const BoxMeshLocator<dim>    &locator,
-                               const FootInterpolation      &interpolation);
+  advect_along_characteristics(TransportedFields<dim>    &fields,
+                               const double               tau,
+                               const BoxMeshLocator<dim> &locator,
+                               const FootInterpolation   &interpolation);
 
   /**
    * One step of the trace above for arbitrary @p points (four stages, in

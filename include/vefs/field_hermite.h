@@ -67,7 +67,7 @@ namespace vefs
 
     /** Like value(), for a component of recover_components(). */
     double
-    component_value(const TransportedFields<dim>                         &fields,
+    component_value(const TransportedFields<dim> &fields,
                     const typename DoFHandler<dim>::active_cell_iterator &cell,
                     const Point<dim>                                     &xi,
                     const unsigned int component,

@@ -51,7 +51,6 @@ namespace vefs
     elastic_solid
   };
 
-  /** How the level set is interpolated at the feet of the characteristics. */
   /** How the velocity is interpolated at the feet of the characteristics. */
   enum class VelocityInterpolation
   {
@@ -60,6 +59,7 @@ namespace vefs
     limited_cubic
   };
 
+  /** How the level set is interpolated at the feet of the characteristics. */
   enum class LevelSetInterpolation
   {
     linear,
@@ -155,8 +155,9 @@ namespace vefs
      * Whether the vertices of cut cells outside the liquid take the extended
      * velocity instead of the flow step's ('Outside velocity of cut cells').
      */
-    bool         extend_outside_velocity;
-    /** Whether they take the extended stress ('Outside stress of cut cells'). */
+    bool extend_outside_velocity;
+    /** Whether they take the extended stress ('Outside stress of cut cells').
+     */
     bool         extend_outside_stress;
     bool         volume_correction;
     unsigned int redistancing_interval;

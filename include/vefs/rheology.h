@@ -58,9 +58,9 @@ namespace vefs
     double
     effective_viscosity(const double tau) const
     {
-      return has_stress() ?
-               eta_s + theta * theta * tau * eta_p / (lambda + alpha * tau) :
-               eta_s + eta_p;
+      return has_stress()
+               ? eta_s + theta * theta * tau * eta_p / (lambda + alpha * tau)
+               : eta_s + eta_p;
     }
 
     /** k: how much of the advected stress survives the step. */

@@ -127,12 +127,12 @@ namespace vefs
     const double                  tau;
     const double                  mu;
     /** The factors of sigma* and of (grad u sigma*) (Rheology). */
-    const double                  sigma_star_factor;
-    const double                  geometric_factor;
+    const double sigma_star_factor;
+    const double geometric_factor;
     /** Whether the stress law also sees u* ('Stress theta' < 1). */
-    const bool                    with_explicit_strain;
-    Tensor<1, dim>                gravity;
-    double                        regularization;
+    const bool     with_explicit_strain;
+    Tensor<1, dim> gravity;
+    double         regularization;
 
     LiquidValues<dim>     liquid_values;
     BoxSurfaceValues<dim> surface_values;
