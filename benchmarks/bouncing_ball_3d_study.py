@@ -23,16 +23,13 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 sys.path.insert(0, HERE)
-from broken_dam_refinement import (set_entry, run_vefs,  # noqa: E402
-                                   vefs_command)
+from broken_dam_refinement import (apply_settings, set_entry,  # noqa: E402
+                                   run_vefs, vefs_command)
 from vefs_stats import read_statistics  # noqa: E402
 
 
 def make_prm(text, level, end_time, output_dir, settings):
-    for setting in settings:
-        entry, value = setting.split("=", 1)
-        path = entry.split("/")
-        text = set_entry(text, path[:-1], path[-1], value)
+    text = apply_settings(text, settings)
     text = set_entry(text, ["Mesh refinement"], "Maximum level", str(level))
     text = set_entry(text, ["Mesh refinement"], "Bulk level", str(level - 1))
     text = set_entry(text, ["Time"], "End time", "%g" % end_time)

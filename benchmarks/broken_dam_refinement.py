@@ -125,6 +125,15 @@ def set_entry(text, path, name, value):
     return "\n".join(lines)
 
 
+def apply_settings(text, settings):
+    """The prm text with each 'Section/Sub/Entry=value' of `settings` set."""
+    for setting in settings:
+        entry, value = setting.split("=", 1)
+        path = entry.split("/")
+        text = set_entry(text, path[:-1], path[-1], value)
+    return text
+
+
 def make_prm(text, level, output_dir):
     text = set_entry(text, ["Mesh refinement"], "Maximum level", str(level))
     text = set_entry(text, ["Mesh refinement"], "Bulk level", str(level - 2))

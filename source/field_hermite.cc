@@ -41,6 +41,27 @@ namespace vefs
           }
       return derivative;
     }
+    /**
+     * The sums of the cells' contributions in @p sums, divided by the number
+     * of cells around each node (@p n_cells, summed the same way), ghosted.
+     * Entries without a contribution keep their values.
+     */
+    template <std::size_t n>
+    void
+    mean_over_cells(
+      std::array<LinearAlgebra::distributed::Vector<double>, n> &sums,
+      LinearAlgebra::distributed::Vector<double>                &n_cells)
+    {
+      n_cells.compress(VectorOperation::add);
+      for (auto &sum : sums)
+        {
+          sum.compress(VectorOperation::add);
+          for (unsigned int i = 0; i < sum.locally_owned_size(); ++i)
+            if (n_cells.local_element(i) > 0)
+              sum.local_element(i) /= n_cells.local_element(i);
+          sum.update_ghost_values();
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -103,15 +124,7 @@ namespace vefs
             }
         }
 
-    n_cells.compress(VectorOperation::add);
-    for (auto &derivative : derivatives)
-      {
-        derivative.compress(VectorOperation::add);
-        for (unsigned int i = 0; i < derivative.locally_owned_size(); ++i)
-          if (n_cells.local_element(i) > 0)
-            derivative.local_element(i) /= n_cells.local_element(i);
-        derivative.update_ghost_values();
-      }
+    mean_over_cells(derivatives, n_cells);
   }
 
   template <int dim>
@@ -154,15 +167,7 @@ namespace vefs
             }
         }
 
-    n_cells.compress(VectorOperation::add);
-    for (auto &derivative : derivatives)
-      {
-        derivative.compress(VectorOperation::add);
-        for (unsigned int i = 0; i < derivative.locally_owned_size(); ++i)
-          if (n_cells.local_element(i) > 0)
-            derivative.local_element(i) /= n_cells.local_element(i);
-        derivative.update_ghost_values();
-      }
+    mean_over_cells(derivatives, n_cells);
   }
 
   template <int dim>
