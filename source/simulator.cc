@@ -592,7 +592,8 @@ namespace vefs
                           theta < 1 ? blended_velocity : fields.fields,
                           domain,
                           rheology,
-                          tau);
+                          tau,
+                          parameters.extend_outside_stress);
           statistics.max_velocity_gradient = report.max_velocity_gradient;
           statistics.strain_limited_points = report.strain_limited_points;
         }

@@ -142,7 +142,8 @@ namespace vefs
                 const typename TransportedFields<dim>::VectorType &velocity,
                 const LiquidDomain<dim>                           &domain,
                 const Rheology<dim>                               &rheology,
-                const double                                       tau)
+                const double                                       tau,
+                const bool outside_extended)
   {
     using VectorType = typename TransportedFields<dim>::VectorType;
     constexpr unsigned int first =
@@ -233,7 +234,8 @@ namespace vefs
               sum(node.dofs[first + i]) / weight;
       }
     fields.finalize();
-    bound_stress_outside_liquid(fields, domain, rheology, sum);
+    if (!outside_extended)
+      bound_stress_outside_liquid(fields, domain, rheology, sum);
 
     const MPI_Comm comm =
       fields.dof_handler.get_triangulation().get_communicator();
@@ -297,13 +299,15 @@ namespace vefs
                    const TransportedFields<2>::VectorType &,
                    const LiquidDomain<2> &,
                    const Rheology<2> &,
-                   const double);
+                   const double,
+                   const bool);
   template StressUpdateReport
   update_stress<3>(TransportedFields<3> &,
                    const TransportedFields<3>::VectorType &,
                    const LiquidDomain<3> &,
                    const Rheology<3> &,
-                   const double);
+                   const double,
+                   const bool);
   template StressMeasure
   measure_stress<2>(const TransportedFields<2> &,
                     const LiquidDomain<2> &,

@@ -31,7 +31,8 @@ namespace vefs
    * flow step's stress term sees). The nodal value is the cell-volume
    * weighted average of these, so that a liquid at rest keeps its stress
    * exactly. A node outside the liquid may then carry at most a bounded
-   * multiple of the stretch of its cells' liquid nodes (stress.cc). Other
+   * multiple of the stretch of its cells' liquid nodes (stress.cc), unless
+   * @p outside_extended: the extension then overwrites those nodes. Other
    * nodes keep their values (the extension overwrites them). The velocity
    * gradient is taken from @p velocity, a vector with the layout of the
    * fields: the fields themselves, or theta u + (1 - theta) u* for 'Stress
@@ -44,7 +45,8 @@ namespace vefs
                 const typename TransportedFields<dim>::VectorType &velocity,
                 const LiquidDomain<dim>                           &domain,
                 const Rheology<dim>                               &rheology,
-                const double                                       tau);
+                const double                                       tau,
+                const bool outside_extended);
 
   /** What the statistics report of the stress. */
   struct StressMeasure
