@@ -487,12 +487,14 @@ namespace vefs
       prm.declare_entry("AMG smoother sweeps",
                         "4",
                         Patterns::Integer(1, 20),
-                        "Smoother sweeps per level of the AMG V-cycle for "
-                        "the velocity block. The block is dominated by the "
-                        "mass matrix rho/tau M when rho h^2/(tau mu) is large, "
-                        "and then the smoother does most of the work: 4 "
-                        "keeps the iteration counts flat under refinement "
-                        "(measured: 2D broken dam, levels 5-7; 3D).");
+                        "Smoother sweeps per level of the AMG V-cycles for "
+                        "the velocity block and for the pressure Laplacian "
+                        "of the Schur approximation. The velocity block is "
+                        "dominated by the mass matrix rho/tau M when "
+                        "rho h^2/(tau mu) is large, and then the smoother does "
+                        "most of the work: 4 keeps the iteration counts flat "
+                        "under refinement (measured: 2D broken dam, levels "
+                        "5-9; 3D; doc/solver_iterations.md).");
       prm.declare_entry("Pressure stabilization",
                         "0.25",
                         Patterns::Double(0),

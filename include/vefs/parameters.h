@@ -175,7 +175,8 @@ namespace vefs
     double       free_surface_stabilization;
     StressUpdate stress_update;
     /** Weight of the new velocity in the stress of the diffusion step. */
-    double       stress_theta;
+    double stress_theta;
+    /** Smoother sweeps of both AMG V-cycles (velocity, Schur Laplacian). */
     unsigned int amg_smoother_sweeps;
 
     std::string prescribed_velocity;
