@@ -40,6 +40,7 @@ namespace vefs
   step_problem(const Parameters  &p,
                const unsigned int step,
                const double       tau,
+               const double       controlled_tau,
                const double       cfl,
                const double       max_velocity)
   {
@@ -51,6 +52,19 @@ namespace vefs
              number(max_velocity) +
              " m/s) exceeds 'Health check/Maximum CFL' = " + number(p.max_cfl) +
              "; " + smaller_steps + ", or raise the bound";
+    // A blow-up that the strain bound keeps below the CFL bound shows as
+    // steps that shrink without end (an unstable ball: 2,600 steps down to
+    // 1e-80 s before the right-hand side overflowed).
+    if (controlled_tau < p.min_time_step_fraction * p.time_step)
+      return "the time step that 'Time/Target CFL' and 'Time/Maximum strain "
+             "per step' allow fell to " +
+             number(controlled_tau) +
+             " s, below 'Health check/Minimum time step fraction' = " +
+             number(p.min_time_step_fraction) + " times 'Time/Time step' (" +
+             number(p.time_step) +
+             " s): the velocity or its gradient is blowing up, or 'Time/"
+             "Maximum strain per step' is far too small; check the scene, or "
+             "lower the bound";
     if (step > p.maximum_steps)
       return "more than 'Time/Maximum steps' = " +
              std::to_string(p.maximum_steps) + " steps (time step " +

@@ -183,6 +183,15 @@ namespace vefs
                         "CFL number tau max|u| / h_min exceeds this bound: "
                         "the velocity has blown up or the time step is far "
                         "too large.");
+      prm.declare_entry("Minimum time step fraction",
+                        "1e-6",
+                        Patterns::Double(0, 1),
+                        "The run stops (exit status 1) before a step when "
+                        "the step that 'Time/Target CFL' and 'Time/Maximum "
+                        "strain per step' allow is below this fraction of "
+                        "'Time/Time step': the velocity or its gradient is "
+                        "blowing up, and the steps would shrink for ever "
+                        "instead. 0 turns the check off.");
     }
     prm.leave_subsection();
 
@@ -652,8 +661,9 @@ namespace vefs
     prm.leave_subsection();
 
     prm.enter_subsection("Health check");
-    max_volume_change = prm.get_double("Maximum volume change");
-    max_cfl           = prm.get_double("Maximum CFL");
+    max_volume_change      = prm.get_double("Maximum volume change");
+    max_cfl                = prm.get_double("Maximum CFL");
+    min_time_step_fraction = prm.get_double("Minimum time step fraction");
     prm.leave_subsection();
 
     prm.enter_subsection("Cavity");

@@ -420,10 +420,18 @@ namespace vefs
 
     for (unsigned int steps_done = 1; !is_last_step(statistics); ++steps_done)
       {
-        double tau = prescribed_velocity
-                       ? choose_prescribed_time_step(statistics.time)
-                       : std::min(choose_time_step(statistics),
-                                  parameters.end_time - statistics.time);
+        // The flow's step that the CFL and strain bounds allow is watched
+        // for collapse; a prescribed velocity cannot blow up.
+        double controlled_tau = parameters.time_step;
+        double tau;
+        if (prescribed_velocity)
+          tau = choose_prescribed_time_step(statistics.time);
+        else
+          {
+            controlled_tau = choose_time_step(statistics);
+            tau =
+              std::min(controlled_tau, parameters.end_time - statistics.time);
+          }
         if (parameters.output_time_interval > 0)
           tau =
             std::min(tau, next_output_time(statistics.time) - statistics.time);
@@ -433,6 +441,7 @@ namespace vefs
         const std::string problem = step_problem(parameters,
                                                  statistics.step + 1,
                                                  tau,
+                                                 controlled_tau,
                                                  cfl,
                                                  statistics.max_velocity);
         if (!problem.empty())

@@ -38,3 +38,8 @@ run volume_loss "subsection Mesh refinement" "set Volume correction = false" "en
 # With a target CFL, the steps that would be needed exceed the bound.
 run too_many_steps "subsection Time" "set Time step = 0.1" "set Target CFL = 0.5" \
   "set Maximum steps = 20" "end"
+# Steps that shrink without end (here forced by a tiny strain bound on a
+# liquid with a stress) stop the run instead of crawling on.
+run collapsing_step "subsection Material" "set Solvent viscosity = 1" \
+  "set Polymer viscosity = 9" "set Relaxation time = 0.05" "end" \
+  "subsection Time" "set Maximum strain per step = 1e-12" "end"

@@ -21,11 +21,16 @@ namespace vefs
   bool
   fields_are_finite(const TransportedFields<dim> &fields);
 
-  /** Before a step of length @p tau: its CFL number and the step count. */
+  /**
+   * Before a step of length @p tau: its CFL number, the step count, and
+   * @p controlled_tau, the step that the CFL and strain bounds allow (before
+   * the end time and output times shorten it).
+   */
   std::string
   step_problem(const Parameters  &parameters,
                const unsigned int step,
                const double       tau,
+               const double       controlled_tau,
                const double       cfl,
                const double       max_velocity);
 

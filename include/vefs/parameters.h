@@ -121,6 +121,8 @@ namespace vefs
     /** Bounds of the health check done after every step. */
     double max_volume_change;
     double max_cfl;
+    /** Smallest controlled step, as a fraction of time_step. */
+    double min_time_step_fraction;
 
     std::vector<double>       cavity_lower;
     std::vector<double>       cavity_upper;
