@@ -323,6 +323,31 @@ namespace vefs
   }
 
   template <int dim>
+  typename Simulator<dim>::StepLength
+  Simulator<dim>::choose_step_length(
+    const StepStatistics<dim> &statistics) const
+  {
+    // A prescribed velocity cannot blow up: only the flow's step is watched
+    // for collapse.
+    StepLength step;
+    if (prescribed_velocity)
+      {
+        step.controlled = parameters.time_step;
+        step.tau        = choose_prescribed_time_step(statistics.time);
+      }
+    else
+      {
+        step.controlled = choose_time_step(statistics);
+        step.tau =
+          std::min(step.controlled, parameters.end_time - statistics.time);
+      }
+    if (parameters.output_time_interval > 0)
+      step.tau =
+        std::min(step.tau, next_output_time(statistics.time) - statistics.time);
+    return step;
+  }
+
+  template <int dim>
   double
   Simulator<dim>::next_output_time(const double time) const
   {
@@ -420,28 +445,15 @@ namespace vefs
 
     for (unsigned int steps_done = 1; !is_last_step(statistics); ++steps_done)
       {
-        // The flow's step that the CFL and strain bounds allow is watched
-        // for collapse; a prescribed velocity cannot blow up.
-        double controlled_tau = parameters.time_step;
-        double tau;
-        if (prescribed_velocity)
-          tau = choose_prescribed_time_step(statistics.time);
-        else
-          {
-            controlled_tau = choose_time_step(statistics);
-            tau =
-              std::min(controlled_tau, parameters.end_time - statistics.time);
-          }
-        if (parameters.output_time_interval > 0)
-          tau =
-            std::min(tau, next_output_time(statistics.time) - statistics.time);
-        const double cfl =
+        const StepLength step_length = choose_step_length(statistics);
+        const double     tau         = step_length.tau;
+        const double     cfl =
           tau * statistics.max_velocity / levels.finest_cell_size;
         // Checked before the step, while the state is still good.
         const std::string problem = step_problem(parameters,
                                                  statistics.step + 1,
                                                  tau,
-                                                 controlled_tau,
+                                                 step_length.controlled,
                                                  cfl,
                                                  statistics.max_velocity);
         if (!problem.empty())

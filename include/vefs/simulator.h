@@ -89,6 +89,20 @@ namespace vefs
     double
     choose_time_step(const StepStatistics<dim> &last) const;
 
+    /** The length of the next step, and the flow's step it came from. */
+    struct StepLength
+    {
+      double tau;
+      /** The step the CFL and strain bounds allow, before the end time and
+       * output times shorten it (the health check watches it). */
+      double controlled;
+    };
+
+    /** The next step after @p statistics: the flow's (or the prescribed
+     * velocity's) step, shortened to land on the end and output times. */
+    StepLength
+    choose_step_length(const StepStatistics<dim> &statistics) const;
+
     /** The first multiple of 'Output/Time interval' after @p time. */
     double
     next_output_time(const double time) const;
