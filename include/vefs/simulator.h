@@ -193,6 +193,9 @@ namespace vefs
     Timer  since_checkpoint;
     /** Solves per step with contact walls, at the most. */
     static constexpr unsigned int max_contact_iterations = 10;
+    /** The shortest step before an end or output time, as a fraction of the
+     * step before it. */
+    static constexpr double min_step_fraction = 0.25;
   };
 } // namespace vefs
 
