@@ -338,8 +338,7 @@ namespace vefs
     else
       {
         step.controlled = choose_time_step(statistics);
-        step.tau =
-          std::min(step.controlled, parameters.end_time - statistics.time);
+        step.tau        = step.controlled;
       }
     double target = parameters.end_time;
     if (parameters.output_time_interval > 0)

@@ -506,7 +506,7 @@ namespace vefs
     // 2, water's iterations grew once the AMG had more than one level (2D
     // broken dam, mu = 0.001 Pa s, 1 ms steps: 13.4 at level 7, 15.3 at
     // level 8); with 4 they stay flat (13.4, 13.1; 12.5 at level 9) at the
-    // same solve time, and the 3D dam's fall (level 5) from 21.7 to 17.4.
+    // same solve time; the 3D dam's (level 5) fall from 21.7 to 17.4.
     TrilinosWrappers::PreconditionAMG::AdditionalData laplace_data;
     laplace_data.elliptic        = true;
     laplace_data.smoother_sweeps = parameters.amg_smoother_sweeps;
