@@ -486,10 +486,11 @@ namespace vefs
               fields.set_velocity(*prescribed_velocity);
             }
           level_set_history.add_step(fields, tau);
-          advect_along_characteristics(fields,
-                                       tau,
-                                       *locator,
-                                       FootInterpolation(parameters));
+          advect_along_characteristics(
+            fields,
+            tau,
+            *locator,
+            FootInterpolation(parameters, rheology.shear_modulus()));
           if (level_set_history.enabled())
             {
               level_set_history.compose(fields,

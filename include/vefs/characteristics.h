@@ -22,14 +22,13 @@ namespace vefs
     bool   cubic_stress  = false;
     double shear_modulus = 1;
 
-    explicit FootInterpolation(const Parameters &parameters)
+    /** @p shear_modulus: Rheology::shear_modulus(), used with a stress. */
+    FootInterpolation(const Parameters &parameters, const double shear_modulus)
       : level_set(parameters.level_set_interpolation)
       , velocity(parameters.velocity_interpolation)
       , cubic_stress(parameters.cubic_stress_interpolation &&
                      parameters.regime() != Regime::newtonian)
-      , shear_modulus(cubic_stress ? parameters.polymer_viscosity /
-                                       parameters.relaxation_time
-                                   : 1.)
+      , shear_modulus(cubic_stress ? shear_modulus : 1.)
     {
     }
   };

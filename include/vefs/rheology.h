@@ -55,6 +55,13 @@ namespace vefs
       return regime != Regime::newtonian;
     }
 
+    /** G = eta_p / lambda, the elastic modulus of the stress. */
+    double
+    shear_modulus() const
+    {
+      return eta_p / lambda;
+    }
+
     double
     effective_viscosity(const double tau) const
     {
