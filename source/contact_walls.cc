@@ -34,7 +34,6 @@ namespace vefs
                            const unsigned int     liquid_index)
   {
     normal_sign.clear();
-    allowed_speed.clear();
     in_contact.reinit(owned,
                       relevant,
                       dof_handler.get_triangulation().get_communicator());
@@ -57,68 +56,8 @@ namespace vefs
             }
     // Every wet degree of freedom starts in contact.
     for (const auto &entry : normal_sign)
-      {
-        allowed_speed[entry.first] = 0;
-        if (owned.is_element(entry.first))
-          in_contact(entry.first) = 1;
-      }
-    in_contact.update_ghost_values();
-  }
-
-  template <int dim>
-  void
-  ContactWalls<dim>::measure_gaps(const DoFHandler<dim>        &dof_handler,
-                                  const TransportedFields<dim> &fields,
-                                  const double                  tau,
-                                  const unsigned int            liquid_index)
-  {
-    if (walls.empty())
-      return;
-    // Both finite elements are Q1 systems: a face degree of freedom is
-    // known by its component and its vertex on the face.
-    std::vector<types::global_dof_index>      face_dofs, field_dofs;
-    std::map<types::global_dof_index, double> approach_speed;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial() && cell->active_fe_index() == liquid_index &&
-          cell->at_boundary())
-        for (const unsigned int f : cell->face_indices())
-          if (is_on_contact_wall(cell, f))
-            {
-              const unsigned int normal = cell->face(f)->boundary_id() / 2;
-              const auto        &fe     = cell->get_fe();
-              face_dofs.resize(fe.n_dofs_per_face());
-              cell->face(f)->get_dof_indices(face_dofs, liquid_index);
-              field_dofs.resize(fields.fe.n_dofs_per_face());
-              fields.cell_of(cell)->face(f)->get_dof_indices(field_dofs);
-              for (unsigned int k = 0; k < face_dofs.size(); ++k)
-                if (fe.face_system_to_component_index(k).first == normal)
-                  {
-                    const unsigned int vertex =
-                      fe.face_system_to_component_index(k).second;
-                    for (unsigned int j = 0; j < field_dofs.size(); ++j)
-                      {
-                        const auto [component, field_vertex] =
-                          fields.fe.face_system_to_component_index(j);
-                        if (field_vertex != vertex)
-                          continue;
-                        const double value = fields.fields(field_dofs[j]);
-                        if (component ==
-                            TransportedFields<dim>::level_set_component)
-                          allowed_speed[face_dofs[k]] =
-                            std::max(value, 0.) / tau;
-                        else if (component == normal)
-                          approach_speed[face_dofs[k]] =
-                            normal_sign.at(face_dofs[k]) * value;
-                      }
-                  }
-            }
-    for (const auto &entry : normal_sign)
-      if (const auto dof = entry.first;
-          in_contact.locally_owned_elements().is_element(dof))
-        in_contact(dof) = (allowed_speed.at(dof) == 0 ||
-                           approach_speed.at(dof) > allowed_speed.at(dof))
-                            ? 1
-                            : 0;
+      if (owned.is_element(entry.first))
+        in_contact(entry.first) = 1;
     in_contact.update_ghost_values();
   }
 
@@ -130,12 +69,7 @@ namespace vefs
     for (const auto &entry : normal_sign)
       if (in_contact(entry.first) == 1 &&
           !constraints.is_constrained(entry.first))
-        {
-          constraints.add_line(entry.first);
-          constraints.set_inhomogeneity(entry.first,
-                                        entry.second *
-                                          allowed_speed.at(entry.first));
-        }
+        constraints.add_line(entry.first);
   }
 
   template <int dim>
@@ -210,7 +144,7 @@ namespace vefs
               else
                 force -= sign * reaction(dof);
             }
-          else if (sign * solution(dof) > allowed_speed.at(dof))
+          else if (sign * solution(dof) > 0)
             {
               // Released, but the liquid would cross the wall there.
               in_contact(dof) = 1;

@@ -575,7 +575,6 @@ namespace vefs
     {
       TimerOutput::Scope scope(timer, "3 diffusion: setup");
       flow.setup(domain, new_time);
-      flow.start_contact(fields, tau);
     }
     // Contact walls: solve again while the contact set changes (design
     // section 4); a few times at the most.

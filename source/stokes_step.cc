@@ -590,17 +590,6 @@ namespace vefs
   }
 
   template <int dim>
-  void
-  StokesStep<dim>::start_contact(const TransportedFields<dim> &fields,
-                                 const double                  tau)
-  {
-    if (contact.empty())
-      return;
-    contact.measure_gaps(dof_handler, fields, tau, liquid_index);
-    make_constraints(constraints, true);
-  }
-
-  template <int dim>
   bool
   StokesStep<dim>::update_contact(const TransportedFields<dim> &fields,
                                   const double                  tau)

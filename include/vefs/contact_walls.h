@@ -9,7 +9,6 @@
 #include <vefs/ghost_penalty.h>
 #include <vefs/parameters.h>
 #include <vefs/stokes_cell_system.h>
-#include <vefs/transported_fields.h>
 
 #include <map>
 
@@ -17,15 +16,12 @@ namespace vefs
 {
   /**
    * The seed's Signorini-like walls (design section 4): the liquid may leave
-   * a contact wall but never cross it, with a compressive normal traction
-   * where it touches. Solved as an active set on the velocity degrees of
-   * freedom normal to the wall. A wall node whose liquid is a gap g away
-   * (the level set there, zero where the liquid touches) may approach at
-   * u.n <= g / tau, so that the next transport brings the liquid to the
-   * wall but not across: in contact, u.n = g / tau is imposed. After a
-   * solve, a node whose reaction pulls the liquid toward the wall is
-   * released, and a released one whose velocity exceeds g / tau is put
-   * back, until the set stops changing.
+   * a contact wall but never cross it, u.n <= 0, with a compressive normal
+   * traction where u.n = 0. Solved as an active set on the velocity degrees
+   * of freedom normal to the wall: every wet one starts in contact (u.n = 0
+   * imposed); after a solve, one whose reaction pulls the liquid toward the
+   * wall is released, and a released one whose velocity crosses the wall is
+   * put back, until the set stops changing.
    */
   template <int dim>
   class ContactWalls
@@ -43,8 +39,7 @@ namespace vefs
 
     /**
      * After the flow unknowns are distributed: find the degrees of freedom
-     * normal to contact walls on liquid cells; all of them start in contact
-     * with a zero gap (the largest set, for the sparsity pattern).
+     * normal to contact walls on liquid cells; all of them start in contact.
      */
     void
     reset(const DoFHandler<dim> &dof_handler,
@@ -52,18 +47,7 @@ namespace vefs
           const IndexSet        &relevant,
           const unsigned int     liquid_index);
 
-    /**
-     * The gaps between the liquid and the walls from the level set of
-     * @p fields; a node starts in contact where the liquid touches the wall
-     * or where its velocity u* would bring it across within @p tau.
-     */
-    void
-    measure_gaps(const DoFHandler<dim>        &dof_handler,
-                 const TransportedFields<dim> &fields,
-                 const double                  tau,
-                 const unsigned int            liquid_index);
-
-    /** u.n = g / tau at the degrees of freedom in contact. */
+    /** u.n = 0 at the degrees of freedom in contact. */
     void
     add_constraints(AffineConstraints<double> &constraints) const;
 
@@ -104,11 +88,6 @@ namespace vefs
     std::map<types::global_dof_index, int> normal_sign;
     /** 1 for a degree of freedom in contact, 0 otherwise; ghosted. */
     Vector in_contact;
-    /**
-     * Locally relevant degrees of freedom normal to a contact wall: the
-     * largest speed g / tau toward the wall.
-     */
-    std::map<types::global_dof_index, double> allowed_speed;
   };
 } // namespace vefs
 

@@ -52,13 +52,6 @@ namespace vefs
     void
     setup(const LiquidDomain<dim> &domain, const double time);
 
-    /**
-     * With contact walls: the gaps between the liquid of @p fields and the
-     * walls, and the contact set the step's first solve starts from.
-     */
-    void
-    start_contact(const TransportedFields<dim> &fields, const double tau);
-
     /** Assemble with u* = the advected velocity of @p fields. */
     void
     assemble(const TransportedFields<dim> &fields, const double tau);
