@@ -14,7 +14,7 @@ and lift-off times, lowest centroid height, rebound apex, contact force
 peak, the impulse balance, volume change (bound 1e-6) and the energy
 left after the bounce. The material has no dissipation: the exact energy
 (kinetic + potential + elastic) is constant, so whatever is lost is the
-scheme's. Bound: at least 0.8 of it left at lift-off, between the 0.90
+scheme's. Bound: at least 0.8 of it left at lift-off, between the 0.91
 that the scene's scheme keeps on this mesh and the 0.72 of the seed's
 (Stress theta = 1, linear interpolation and stress update), which fails."""
 import os
