@@ -504,11 +504,17 @@ namespace vefs
                         "most of the work: 4 keeps the iteration counts flat "
                         "under refinement (measured: 2D broken dam, levels "
                         "5-9; 3D; doc/solver_iterations.md).");
-      prm.declare_entry("Pressure stabilization",
-                        "0.25",
-                        Patterns::Double(0),
-                        "Factor c of the PSPG parameter of the Q1-Q1 "
-                        "element, tau_K = c / (rho/tau + 4 mu / h_K^2).");
+      prm.declare_entry(
+        "Pressure stabilization",
+        "0.25",
+        Patterns::Double(0),
+        "Factor c of the PSPG parameter of the Q1-Q1 "
+        "element, tau_K = c / (rho/tau + 4 mu / h_K^2). "
+        "Its consistency error grows with c where the "
+        "pressure gradient is large: the stiff ball's "
+        "lift-off and rebound only settled under refinement "
+        "with 0.05 (its scene's value; 10-20 % more Krylov "
+        "iterations at 0.02-0.01; doc/bouncing_ball_study.md).");
       prm.declare_entry(
         "Free surface stabilization",
         "0",
