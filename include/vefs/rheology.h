@@ -110,7 +110,7 @@ namespace vefs
       const Tensor<2, dim> stretching = grad_u_star * advected;
       return theta * (1 - theta) * stress_factor(tau) * tau *
              (symmetrize(stretching + transpose(stretching)) +
-              (2 * eta_p / lambda) * symmetrize(grad_u_star));
+              2 * shear_modulus() * symmetrize(grad_u_star));
     }
 
     /**
@@ -132,7 +132,7 @@ namespace vefs
             tensor_exponential(limited_strain(grad_u, tau));
           const Tensor<2, dim> carried =
             E * Tensor<2, dim>(conformation(advected)) * transpose(E);
-          return stress_factor(tau) * (eta_p / lambda) *
+          return stress_factor(tau) * shear_modulus() *
                  (symmetrize(carried) - unit_symmetric_tensor<dim>());
         }
       const Tensor<2, dim> stretching = grad_u * advected;
@@ -165,7 +165,7 @@ namespace vefs
     {
       const SymmetricTensor<2, dim> c = conformation(sigma);
       const double                  J = determinant(c);
-      return 0.5 * (eta_p / lambda) *
+      return 0.5 * shear_modulus() *
              (trace(c) - dim - (J > 0 ? std::log(J) : 0.));
     }
 
