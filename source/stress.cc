@@ -5,6 +5,8 @@
 #include <vefs/stress.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace vefs
 {
@@ -26,9 +28,22 @@ namespace vefs
     double
     smallest_eigenvalue(const SymmetricTensor<2, 3> &c)
     {
-      // Jacobi rotations: robust for clustered eigenvalues; sorted in
-      // descending order.
-      return eigenvectors(c, SymmetricTensorEigenvectorMethod::jacobi)[2].first;
+      // A blown-up stress (infinite, or so large that the rotations do not
+      // converge) has no smallest eigenvalue: NaN, which the health check
+      // reports, instead of deal.II's exception out of the postprocessing.
+      if (!std::isfinite(c.norm()))
+        return std::numeric_limits<double>::quiet_NaN();
+      try
+        {
+          // Jacobi rotations: robust for clustered eigenvalues; sorted in
+          // descending order.
+          return eigenvectors(c, SymmetricTensorEigenvectorMethod::jacobi)[2]
+            .first;
+        }
+      catch (const ExceptionBase &)
+        {
+          return std::numeric_limits<double>::quiet_NaN();
+        }
     }
 
     /**
@@ -257,6 +272,7 @@ namespace vefs
       vertex_sigma;
 
     StressMeasure measure;
+    bool          undefined_eigenvalue = false;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
@@ -280,6 +296,8 @@ namespace vefs
                 smallest_eigenvalue(rheology.conformation(sigma));
               measure.min_conformation_eigenvalue =
                 std::min(measure.min_conformation_eigenvalue, lowest);
+              if (std::isnan(lowest))
+                undefined_eigenvalue = true;
               if (!(lowest > 0))
                 ++measure.non_positive_points;
             }
@@ -291,6 +309,11 @@ namespace vefs
       Utilities::MPI::min(measure.min_conformation_eigenvalue, comm);
     measure.non_positive_points =
       Utilities::MPI::sum(measure.non_positive_points, comm);
+    // std::min() passes over NaN: carry it to the statistic by hand.
+    if (Utilities::MPI::max(static_cast<unsigned int>(undefined_eigenvalue),
+                            comm) == 1)
+      measure.min_conformation_eigenvalue =
+        std::numeric_limits<double>::quiet_NaN();
     return measure;
   }
 
