@@ -3,9 +3,25 @@
 #include <vefs/contact_walls.h>
 
 #include <algorithm>
+#include <array>
+#include <set>
 
 namespace vefs
 {
+  namespace
+  {
+    /** A node's coordinates, exact: the same vertex in every mesh. */
+    template <int dim>
+    std::array<double, dim>
+    coordinates(const Point<dim> &p)
+    {
+      std::array<double, dim> x;
+      for (unsigned int d = 0; d < dim; ++d)
+        x[d] = p[d];
+      return x;
+    }
+  } // namespace
+
   template <int dim>
   ContactWalls<dim>::ContactWalls(const Parameters &parameters)
   {
@@ -33,13 +49,12 @@ namespace vefs
                            const IndexSet        &relevant,
                            const unsigned int     liquid_index)
   {
+    const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     normal_sign.clear();
-    in_contact.reinit(owned,
-                      relevant,
-                      dof_handler.get_triangulation().get_communicator());
+    node.clear();
+    in_contact.reinit(owned, relevant, comm);
     if (walls.empty())
       return;
-    std::vector<types::global_dof_index> face_dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial() && cell->active_fe_index() == liquid_index &&
           cell->at_boundary())
@@ -47,17 +62,27 @@ namespace vefs
           if (is_on_contact_wall(cell, f))
             {
               const types::boundary_id wall = cell->face(f)->boundary_id();
-              const auto              &fe   = cell->get_fe();
-              face_dofs.resize(fe.n_dofs_per_face());
-              cell->face(f)->get_dof_indices(face_dofs, liquid_index);
-              for (unsigned int k = 0; k < face_dofs.size(); ++k)
-                if (fe.face_system_to_component_index(k).first == wall / 2)
-                  normal_sign[face_dofs[k]] = wall % 2 == 0 ? -1 : 1;
+              // Q1 in every component: the dofs of a face sit at its
+              // vertices, the velocity component c being the c-th of each.
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                {
+                  const types::global_dof_index dof =
+                    cell->face(f)->vertex_dof_index(v, wall / 2, liquid_index);
+                  normal_sign[dof] = wall % 2 == 0 ? -1 : 1;
+                  node[dof]        = cell->face(f)->vertex(v);
+                }
             }
-    // Every wet degree of freedom starts in contact.
+
+    // Where the last step ended released (from every rank: the partition
+    // has changed since), the liquid is likely to leave the wall again.
+    std::set<std::array<double, dim>> released;
+    for (const auto &nodes : Utilities::MPI::all_gather(comm, released_nodes))
+      for (const Point<dim> &p : nodes)
+        released.insert(coordinates(p));
     for (const auto &entry : normal_sign)
       if (owned.is_element(entry.first))
-        in_contact(entry.first) = 1;
+        in_contact(entry.first) =
+          released.count(coordinates(node[entry.first])) > 0 ? 0 : 1;
     in_contact.update_ghost_values();
   }
 
@@ -70,6 +95,15 @@ namespace vefs
       if (in_contact(entry.first) == 1 &&
           !constraints.is_constrained(entry.first))
         constraints.add_line(entry.first);
+  }
+
+  template <int dim>
+  void
+  ContactWalls<dim>::add_diagonal_entries(
+    TrilinosWrappers::BlockSparsityPattern &pattern) const
+  {
+    for (const auto &entry : normal_sign)
+      pattern.add(entry.first, entry.first);
   }
 
   template <int dim>
@@ -153,6 +187,12 @@ namespace vefs
         }
     in_contact.update_ghost_values();
     force = Utilities::MPI::sum(force, comm);
+
+    released_nodes.clear();
+    for (const auto &entry : normal_sign)
+      if (in_contact.locally_owned_elements().is_element(entry.first) &&
+          in_contact(entry.first) == 0)
+        released_nodes.push_back(node.at(entry.first));
 
     // Wall faces of liquid cells all of whose normal unknowns are in
     // contact.

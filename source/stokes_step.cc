@@ -272,8 +272,9 @@ namespace vefs
       for (unsigned int j = 0; j < dim + 1; ++j)
         coupling[i][j] =
           (i == dim && j == dim) ? DoFTools::always : DoFTools::none;
-    // Contact constraints concern velocities only, and each contact unknown
-    // starts constrained: the diagonal entries they need are all here.
+    // Contact constraints concern velocities only: of the velocity block,
+    // the pattern needs the diagonal entries of constrained unknowns, those
+    // of every contact unknown, whichever are in contact now.
     TrilinosWrappers::BlockSparsityPattern schur_pattern(owned_partitioning,
                                                          owned_partitioning,
                                                          relevant_partitioning,
@@ -300,6 +301,7 @@ namespace vefs
                                                 schur_pattern,
                                                 false);
       });
+    contact.add_diagonal_entries(schur_pattern);
     schur_pattern.compress();
     schur_matrix.clear();
     schur_matrix.reinit(schur_pattern);

@@ -3,6 +3,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/block_sparsity_pattern.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
@@ -21,7 +22,9 @@ namespace vefs
    * of freedom normal to the wall: every wet one starts in contact (u.n = 0
    * imposed); after a solve, one whose reaction pulls the liquid toward the
    * wall is released, and a released one whose velocity crosses the wall is
-   * put back, until the set stops changing.
+   * put back, until the set stops changing. The next step's set starts from
+   * this one: a wall node released at the end of a step starts released
+   * (the mesh changes between steps, so nodes are matched by position).
    */
   template <int dim>
   class ContactWalls
@@ -39,7 +42,8 @@ namespace vefs
 
     /**
      * After the flow unknowns are distributed: find the degrees of freedom
-     * normal to contact walls on liquid cells; all of them start in contact.
+     * normal to contact walls on liquid cells; all of them start in contact
+     * but those at a node released at the end of the last step.
      */
     void
     reset(const DoFHandler<dim> &dof_handler,
@@ -50,6 +54,13 @@ namespace vefs
     /** u.n = 0 at the degrees of freedom in contact. */
     void
     add_constraints(AffineConstraints<double> &constraints) const;
+    /**
+     * The diagonal entries of all locally relevant degrees of freedom normal
+     * to contact walls, in contact or not: a pattern that holds them serves
+     * every contact set.
+     */
+    void
+    add_diagonal_entries(TrilinosWrappers::BlockSparsityPattern &pattern) const;
 
     /**
      * Reactions from the unconstrained residual of @p solution (cell by
@@ -88,6 +99,10 @@ namespace vefs
     std::map<types::global_dof_index, int> normal_sign;
     /** 1 for a degree of freedom in contact, 0 otherwise; ghosted. */
     Vector in_contact;
+    /** The node of each locally relevant entry of normal_sign. */
+    std::map<types::global_dof_index, Point<dim>> node;
+    /** Nodes of owned degrees of freedom released by the last update(). */
+    std::vector<Point<dim>> released_nodes;
   };
 } // namespace vefs
 
