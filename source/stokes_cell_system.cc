@@ -71,7 +71,8 @@ namespace vefs
     else
       {
         compute_anew(cell);
-        keep(cell);
+        if (cell->at_boundary())
+          keep(cell);
       }
   }
 

@@ -150,6 +150,8 @@ namespace vefs
                   relevant_partitioning[0],
                   liquid_index);
     make_constraints(constraints, true);
+    if (!contact.empty())
+      make_constraints(constraints_without_contact, false);
     make_matrices();
   }
 
@@ -225,17 +227,8 @@ namespace vefs
   void
   StokesStep<dim>::make_matrices()
   {
-    // With contact walls the constrained unknowns change between the solves
-    // of a step: the pattern is that of the constraints without contact,
-    // with the constrained rows kept, so that only the constraints are
-    // remade. (A hanging node on the wall depends on a contact unknown only
-    // while that is released.)
-    const bool                keep_constrained_rows = !contact.empty();
-    AffineConstraints<double> without_contact;
-    if (keep_constrained_rows)
-      make_constraints(without_contact, false);
     const AffineConstraints<double> &pattern_constraints =
-      keep_constrained_rows ? without_contact : constraints;
+      assembly_constraints();
     Table<2, DoFTools::Coupling> coupling(dim + 1, dim + 1);
     for (unsigned int i = 0; i < dim + 1; ++i)
       for (unsigned int j = 0; j < dim + 1; ++j)
@@ -248,7 +241,7 @@ namespace vefs
                                     coupling,
                                     pattern,
                                     pattern_constraints,
-                                    keep_constrained_rows,
+                                    false,
                                     Utilities::MPI::this_mpi_process(comm));
     // The ghost penalty couples the two cells of a face.
     GhostPenalty<dim> ghost_penalty(parameters,
@@ -260,9 +253,7 @@ namespace vefs
       *domain,
       false,
       [&](const auto &, const auto &, const auto &dofs) {
-        pattern_constraints.add_entries_local_to_global(dofs,
-                                                        pattern,
-                                                        keep_constrained_rows);
+        pattern_constraints.add_entries_local_to_global(dofs, pattern, false);
       });
     pattern.compress();
     system_matrix.clear();
@@ -272,9 +263,6 @@ namespace vefs
       for (unsigned int j = 0; j < dim + 1; ++j)
         coupling[i][j] =
           (i == dim && j == dim) ? DoFTools::always : DoFTools::none;
-    // Contact constraints concern velocities only: of the velocity block,
-    // the pattern needs the diagonal entries of constrained unknowns, those
-    // of every contact unknown, whichever are in contact now.
     TrilinosWrappers::BlockSparsityPattern schur_pattern(owned_partitioning,
                                                          owned_partitioning,
                                                          relevant_partitioning,
@@ -282,7 +270,7 @@ namespace vefs
     DoFTools::make_sparsity_pattern(dof_handler,
                                     coupling,
                                     schur_pattern,
-                                    constraints,
+                                    pattern_constraints,
                                     false,
                                     Utilities::MPI::this_mpi_process(comm));
     // The velocity block comes first: the pressure unknowns are the rest.
@@ -297,11 +285,10 @@ namespace vefs
         for (const auto dof : dofs)
           if (dof >= n_u)
             pressure_dofs.push_back(dof);
-        constraints.add_entries_local_to_global(pressure_dofs,
-                                                schur_pattern,
-                                                false);
+        pattern_constraints.add_entries_local_to_global(pressure_dofs,
+                                                        schur_pattern,
+                                                        false);
       });
-    contact.add_diagonal_entries(schur_pattern);
     schur_pattern.compress();
     schur_matrix.clear();
     schur_matrix.reinit(schur_pattern);
@@ -374,7 +361,8 @@ namespace vefs
     lumped_pressure_mass = 0;
 
     StepSystems                         &systems = systems_of_step(fields, tau);
-    StokesCellSystem<dim>               &local   = systems.cells;
+    const AffineConstraints<double>     &assembly = assembly_constraints();
+    StokesCellSystem<dim>               &local    = systems.cells;
     std::vector<types::global_dof_index> dof_indices(
       fe_collection[liquid_index].n_dofs_per_cell());
 
@@ -383,17 +371,17 @@ namespace vefs
         {
           local.compute(cell);
           cell->get_dof_indices(dof_indices);
-          constraints.distribute_local_to_global(local.matrix,
-                                                 local.rhs,
-                                                 dof_indices,
-                                                 system_matrix,
-                                                 system_rhs);
-          constraints.distribute_local_to_global(local.schur,
-                                                 dof_indices,
-                                                 schur_matrix);
-          constraints.distribute_local_to_global(local.pressure_mass,
-                                                 dof_indices,
-                                                 lumped_pressure_mass);
+          assembly.distribute_local_to_global(local.matrix,
+                                              local.rhs,
+                                              dof_indices,
+                                              system_matrix,
+                                              system_rhs);
+          assembly.distribute_local_to_global(local.schur,
+                                              dof_indices,
+                                              schur_matrix);
+          assembly.distribute_local_to_global(local.pressure_mass,
+                                              dof_indices,
+                                              lumped_pressure_mass);
         }
 
     Vector<double> zero_rhs;
@@ -410,11 +398,11 @@ namespace vefs
       [&](const auto &matrix, const auto &schur, const auto &dofs) {
         // Through the right-hand side, so that wall velocities act.
         zero_rhs.reinit(dofs.size());
-        constraints.distribute_local_to_global(matrix,
-                                               zero_rhs,
-                                               dofs,
-                                               system_matrix,
-                                               system_rhs);
+        assembly.distribute_local_to_global(matrix,
+                                            zero_rhs,
+                                            dofs,
+                                            system_matrix,
+                                            system_rhs);
         pressure_dofs.clear();
         pressure_rows.clear();
         for (unsigned int i = 0; i < dofs.size(); ++i)
@@ -427,14 +415,16 @@ namespace vefs
         pressure_schur.extract_submatrix_from(schur,
                                               pressure_rows,
                                               pressure_rows);
-        constraints.distribute_local_to_global(pressure_schur,
-                                               pressure_dofs,
-                                               schur_matrix);
+        assembly.distribute_local_to_global(pressure_schur,
+                                            pressure_dofs,
+                                            schur_matrix);
       });
     system_matrix.compress(VectorOperation::add);
     schur_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
     lumped_pressure_mass.compress(VectorOperation::add);
+    if (!contact.empty())
+      contact.keep_rows(system_matrix, system_rhs, assembly);
   }
 
   namespace
@@ -607,6 +597,7 @@ namespace vefs
                         liquid_index))
       return false;
     make_constraints(constraints, true);
+    contact.impose(system_matrix, system_rhs);
     return true;
   }
 

@@ -3,8 +3,8 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/block_sparsity_pattern.h>
 #include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <vefs/ghost_penalty.h>
@@ -55,18 +55,30 @@ namespace vefs
     void
     add_constraints(AffineConstraints<double> &constraints) const;
     /**
-     * The diagonal entries of all locally relevant degrees of freedom normal
-     * to contact walls, in contact or not: a pattern that holds them serves
-     * every contact set.
+     * Keep the rows of the owned contact unknowns of @p matrix and
+     * @p rhs, assembled without the contact constraints (unknowns that
+     * @p other_constraints constrain excepted), then impose the contact set.
      */
     void
-    add_diagonal_entries(TrilinosWrappers::BlockSparsityPattern &pattern) const;
+    keep_rows(TrilinosWrappers::BlockSparseMatrix &matrix,
+              BlockVector                         &rhs,
+              const AffineConstraints<double>     &other_constraints);
+
+    /**
+     * u.n = 0 in the rows of the unknowns in contact (row of the identity,
+     * scaled by the kept diagonal, zero right-hand side), the kept rows for
+     * the others. A row does not need its column cleared: the solution is
+     * zero there. Rewrites only the rows whose state changed, so a contact
+     * iteration costs no assembly.
+     */
+    void
+    impose(TrilinosWrappers::BlockSparseMatrix &matrix, BlockVector &rhs);
 
     /**
      * Reactions from the unconstrained residual of @p solution (cell by
      * cell with @p local, face by face with @p ghost_penalty), then the
-     * active-set update. Returns true if the
-     * set changed anywhere (then constraints must be made again). Also
+     * active-set update. Returns true if the set changed anywhere (then
+     * the constraints must be made again and the set imposed). Also
      * measures the contact force and the contact length (area in 3D).
      */
     bool
@@ -97,6 +109,21 @@ namespace vefs
      * sign of the outward normal (-1 on a lower wall, +1 on an upper one).
      */
     std::map<types::global_dof_index, int> normal_sign;
+    /** A row of the velocity unknown (blocks (0,0) and (0,1)). */
+    struct KeptRow
+    {
+      std::vector<types::global_dof_index> velocity_columns;
+      std::vector<double>                  velocity_values;
+      std::vector<types::global_dof_index> pressure_columns;
+      std::vector<double>                  pressure_values;
+      double                               diagonal;
+      double                               rhs;
+      /** Whether the matrix holds the identity row now. */
+      bool imposed;
+    };
+    /** The owned contact unknowns' rows as assembled, by unknown. */
+    std::map<types::global_dof_index, KeptRow> kept_rows;
+
     /** 1 for a degree of freedom in contact, 0 otherwise; ghosted. */
     Vector in_contact;
     /** The node of each locally relevant entry of normal_sign. */

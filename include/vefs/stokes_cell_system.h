@@ -29,8 +29,8 @@ namespace vefs
    * the advected stress terms. Used by the assembly and by the reactions of
    * contact walls.
    *
-   * The object keeps what it computed: the contact iterations of a step
-   * assemble the same cells again with other constraints only.
+   * The object keeps what it computed for cells at the cavity's walls: the
+   * contact iterations of a step need their reactions after every solve.
    */
   template <int dim>
   class StokesCellSystem
@@ -45,7 +45,8 @@ namespace vefs
 
     /**
      * Compute the members below for the @p cell, which holds liquid, or
-     * recall them if this object computed them before.
+     * recall them if this object computed them before (cells at the
+     * boundary only).
      */
     void
     compute(const typename DoFHandler<dim>::active_cell_iterator &cell);

@@ -63,7 +63,8 @@ namespace vefs
     /**
      * With contact walls: update the contact set from the last solution
      * (design section 4). Returns true if it changed; then the constraints
-     * are remade and the step must be assembled and solved again.
+     * and the rows of the changed unknowns are remade, and the step must be
+     * solved again (not assembled).
      */
     bool
     update_contact(const TransportedFields<dim> &fields, const double tau);
@@ -147,14 +148,27 @@ namespace vefs
     void
     make_matrices();
 
-    const Parameters                             &parameters;
-    const MPI_Comm                                comm;
-    hp::FECollection<dim>                         fe_collection;
-    DoFHandler<dim>                               dof_handler;
-    std::vector<IndexSet>                         owned_partitioning;
-    std::vector<IndexSet>                         relevant_partitioning;
-    IndexSet                                      relevant_dofs;
-    AffineConstraints<double>                     constraints;
+    const Parameters     &parameters;
+    const MPI_Comm        comm;
+    hp::FECollection<dim> fe_collection;
+    DoFHandler<dim>       dof_handler;
+    std::vector<IndexSet> owned_partitioning;
+    std::vector<IndexSet> relevant_partitioning;
+    IndexSet              relevant_dofs;
+    /** All constraints, contact included: those of the solution. */
+    AffineConstraints<double> constraints;
+    /**
+     * With contact walls, the others: the matrix is assembled with these,
+     * and ContactWalls imposes the contact set on its rows, so that a
+     * contact iteration needs no assembly.
+     */
+    AffineConstraints<double> constraints_without_contact;
+
+    const AffineConstraints<double> &
+    assembly_constraints() const
+    {
+      return contact.empty() ? constraints : constraints_without_contact;
+    }
     std::array<std::unique_ptr<Function<dim>>, 6> wall_velocity;
 
     TrilinosWrappers::BlockSparseMatrix system_matrix;
@@ -171,8 +185,9 @@ namespace vefs
 
     /**
      * What a step keeps through its contact iterations, which change only
-     * the constraints: the cell and face terms (same fields, liquid domain
-     * and tau), and the AMG hierarchies of its first solve (only the rows
+     * the rows of the contact unknowns: the cell and face terms (same
+     * fields, liquid domain and tau; the reactions need those at the walls),
+     * and the AMG hierarchies of its first solve (only the rows
      * of the velocity block that the contact set constrains change, so they
      * still precondition the later solves, which FGMRES allows; the
      * pressure Laplacian does not change at all).
