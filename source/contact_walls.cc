@@ -76,8 +76,7 @@ namespace vefs
                            const unsigned int     liquid_index)
   {
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
-    normal_sign.clear();
-    node.clear();
+    wall_unknowns.clear();
     in_contact.reinit(owned, relevant, comm);
     if (walls.empty())
       return;
@@ -94,8 +93,8 @@ namespace vefs
                 {
                   const types::global_dof_index dof =
                     cell->face(f)->vertex_dof_index(v, wall / 2, liquid_index);
-                  normal_sign[dof] = wall % 2 == 0 ? -1 : 1;
-                  node[dof]        = cell->face(f)->vertex(v);
+                  wall_unknowns[dof] = {wall % 2 == 0 ? -1 : 1,
+                                        cell->face(f)->vertex(v)};
                 }
             }
 
@@ -105,10 +104,10 @@ namespace vefs
     for (const auto &nodes : Utilities::MPI::all_gather(comm, released_nodes))
       for (const Point<dim> &p : nodes)
         released.insert(coordinates(p));
-    for (const auto &entry : normal_sign)
+    for (const auto &entry : wall_unknowns)
       if (owned.is_element(entry.first))
         in_contact(entry.first) =
-          released.count(coordinates(node[entry.first])) > 0 ? 0 : 1;
+          released.count(coordinates(entry.second.node)) > 0 ? 0 : 1;
     in_contact.update_ghost_values();
   }
 
@@ -117,7 +116,7 @@ namespace vefs
   ContactWalls<dim>::add_constraints(
     AffineConstraints<double> &constraints) const
   {
-    for (const auto &entry : normal_sign)
+    for (const auto &entry : wall_unknowns)
       if (in_contact(entry.first) == 1 &&
           !constraints.is_constrained(entry.first))
         constraints.add_line(entry.first);
@@ -132,7 +131,7 @@ namespace vefs
   {
     kept_rows.clear();
     const IndexSet &owned = in_contact.locally_owned_elements();
-    for (const auto &entry : normal_sign)
+    for (const auto &entry : wall_unknowns)
       if (owned.is_element(entry.first) &&
           !other_constraints.is_constrained(entry.first))
         {
@@ -222,7 +221,7 @@ namespace vefs
           local.matrix.vmult(residual, values);
           residual -= local.rhs;
           for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (normal_sign.count(dofs[i]) > 0)
+            if (wall_unknowns.count(dofs[i]) > 0)
               reaction(dofs[i]) += residual(i);
         }
     // Only faces next to a wall can hold wall unknowns.
@@ -234,7 +233,7 @@ namespace vefs
           const FullMatrix<double> &,
           const std::vector<types::global_dof_index> &face_dofs) {
         for (unsigned int i = 0; i < face_dofs.size(); ++i)
-          if (normal_sign.count(face_dofs[i]) > 0)
+          if (wall_unknowns.count(face_dofs[i]) > 0)
             for (unsigned int j = 0; j < face_dofs.size(); ++j)
               reaction(face_dofs[i]) += matrix(i, j) * solution(face_dofs[j]);
       },
@@ -243,21 +242,21 @@ namespace vefs
 
     bool changed = false;
     force        = 0;
-    for (const auto &[dof, sign] : normal_sign)
+    for (const auto &[dof, unknown] : wall_unknowns)
       if (in_contact.locally_owned_elements().is_element(dof))
         {
           if (in_contact(dof) == 1)
             {
               // A wall pushes; one that would pull lets the liquid go.
-              if (sign * reaction(dof) > 0)
+              if (unknown.sign * reaction(dof) > 0)
                 {
                   in_contact(dof) = 0;
                   changed         = true;
                 }
               else
-                force -= sign * reaction(dof);
+                force -= unknown.sign * reaction(dof);
             }
-          else if (sign * solution(dof) > 0)
+          else if (unknown.sign * solution(dof) > 0)
             {
               // Released, but the liquid would cross the wall there.
               in_contact(dof) = 1;
@@ -268,10 +267,10 @@ namespace vefs
     force = Utilities::MPI::sum(force, comm);
 
     released_nodes.clear();
-    for (const auto &entry : normal_sign)
+    for (const auto &entry : wall_unknowns)
       if (in_contact.locally_owned_elements().is_element(entry.first) &&
           in_contact(entry.first) == 0)
-        released_nodes.push_back(node.at(entry.first));
+        released_nodes.push_back(entry.second.node);
 
     // Wall faces of liquid cells all of whose normal unknowns are in
     // contact.
@@ -287,7 +286,7 @@ namespace vefs
               cell->face(f)->get_dof_indices(face_dofs, liquid_index);
               bool touching = true;
               for (const auto dof : face_dofs)
-                if (normal_sign.count(dof) > 0 && in_contact(dof) != 1)
+                if (wall_unknowns.count(dof) > 0 && in_contact(dof) != 1)
                   touching = false;
               if (touching)
                 contact_measure += cell->face(f)->measure();

@@ -104,11 +104,16 @@ namespace vefs
 
     /** Boundary ids of the contact walls. */
     std::vector<types::boundary_id> walls;
-    /**
-     * Locally relevant degrees of freedom normal to a contact wall, with the
-     * sign of the outward normal (-1 on a lower wall, +1 on an upper one).
-     */
-    std::map<types::global_dof_index, int> normal_sign;
+    /** A degree of freedom normal to a contact wall. */
+    struct WallUnknown
+    {
+      /** Of the outward normal: -1 on a lower wall, +1 on an upper one. */
+      int sign;
+      /** Where it sits (its vertex). */
+      Point<dim> node;
+    };
+    /** The locally relevant ones, by degree of freedom. */
+    std::map<types::global_dof_index, WallUnknown> wall_unknowns;
     /** A row of the velocity unknown (blocks (0,0) and (0,1)). */
     struct KeptRow
     {
@@ -126,8 +131,6 @@ namespace vefs
 
     /** 1 for a degree of freedom in contact, 0 otherwise; ghosted. */
     Vector in_contact;
-    /** The node of each locally relevant entry of normal_sign. */
-    std::map<types::global_dof_index, Point<dim>> node;
     /** Nodes of owned degrees of freedom released by the last update(). */
     std::vector<Point<dim>> released_nodes;
   };
