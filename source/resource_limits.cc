@@ -1,8 +1,13 @@
+#include <deal.II/base/numbers.h>
+
 #include <vefs/resource_limits.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
+#include <limits>
+#include <numeric>
 #include <sstream>
 
 namespace vefs
@@ -31,6 +36,32 @@ namespace vefs
       text << value;
       return text.str();
     }
+
+    /**
+     * Volume (area in 2D) of the initial liquid, infinite where it is not
+     * bounded: an expression shape, or a velocity wall that may let liquid in.
+     */
+    double
+    initial_liquid_volume(const Parameters &p)
+    {
+      const unsigned int dim       = p.dimension;
+      const double       unbounded = std::numeric_limits<double>::infinity();
+      if (std::find(p.wall_type.begin(),
+                    p.wall_type.end(),
+                    WallType::velocity) != p.wall_type.end())
+        return unbounded;
+      if (p.initial_shape == "ball")
+        return (dim == 2 ? dealii::numbers::PI : 4. / 3 * dealii::numbers::PI) *
+               std::pow(p.ball_radius, static_cast<int>(dim));
+      if (p.initial_shape == "box")
+        {
+          double volume = 1;
+          for (unsigned int d = 0; d < dim; ++d)
+            volume *= std::max(0., p.box_upper[d] - p.box_lower[d]);
+          return volume;
+        }
+      return unbounded;
+    }
   } // namespace
 
   double
@@ -46,8 +77,16 @@ namespace vefs
         smallest_coarse_size =
           std::min(smallest_coarse_size, extent[d] / p.coarse_subdivisions[d]);
       }
-    // The liquid may fill the cavity at the bulk level ...
-    const double bulk = coarse_cells * std::pow(2., dim * p.bulk_level);
+    // The cavity at the minimum level, and the liquid at the bulk level:
+    // its volume is kept, unless a velocity wall lets liquid in or the
+    // initial shape is an expression (then it may fill the cavity).
+    const double cavity_volume =
+      std::accumulate(extent.begin(), extent.end(), 1., std::multiplies<>());
+    const double liquid_fraction =
+      std::min(1., initial_liquid_volume(p) / cavity_volume);
+    const double bulk =
+      coarse_cells * (std::pow(2., dim * p.min_level) +
+                      liquid_fraction * std::pow(2., dim * p.bulk_level));
     // ... and its surface, at most about the largest cross-section of the
     // cavity, carries a band of finest cells as wide as the band width
     // (or CFL + 2) on either side, twice that with the grading around it.
