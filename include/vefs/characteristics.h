@@ -40,8 +40,8 @@ namespace vefs
    * a two-stage trace, second order in the foot position (with the
    * gradient-augmented level set a four-stage Runge-Kutta trace, whose
    * Jacobian J = dX/dx updates the level set gradient). Feet may lie many
-   * cells away: in the local part of the mesh the locator finds their cell,
-   * on other MPI ranks RemotePointEvaluation does. Feet outside the cavity
+   * cells away: in the local part of the mesh the locator finds their cell;
+   * feet in cells of other MPI ranks go to the rank p4est names. Feet outside the cavity
    * are moved back onto its walls, or wrapped around periodic walls.
    * The fields are interpolated at the feet as @p interpolation says
    * (FieldHermite for the cubic ones).
