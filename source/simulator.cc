@@ -301,7 +301,8 @@ namespace vefs
   {
     const double max_velocity = last.max_velocity;
     double       tau          = parameters.time_step;
-    if (parameters.max_strain_per_step > 0 && last.max_velocity_gradient > 0)
+    if (parameters.max_strain_per_step > 0 &&
+        parameters.strain_bound_shortens_step && last.max_velocity_gradient > 0)
       tau =
         std::min(tau,
                  parameters.max_strain_per_step / last.max_velocity_gradient);

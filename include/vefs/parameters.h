@@ -112,10 +112,16 @@ namespace vefs
     unsigned int dimension;
     std::string  output_directory;
 
-    double       end_time;
-    double       time_step;
-    double       target_cfl;
-    double       max_strain_per_step;
+    double end_time;
+    double time_step;
+    double target_cfl;
+    double max_strain_per_step;
+    /**
+     * Whether the strain bound shortens the next step ('Strain bound =
+     * step'); otherwise only the exponential stress update scales the strain
+     * down where it is larger ('local').
+     */
+    bool         strain_bound_shortens_step;
     unsigned int maximum_steps;
 
     /** Bounds of the health check done after every step. */
