@@ -183,10 +183,10 @@ namespace vefs
 
     /**
      * The fields at @p points, which lie in cells artificial on this rank:
-     * p4est names the rank that owns each point,
-     * and that rank locates and evaluates it. Collective. (deal.II 9.4's
-     * RemotePointEvaluation searched all active cells for every point: 60-80 %
-     * of a step of the 3D ball at 2.5 mm on two ranks.)
+     * p4est names the rank that owns each point, and that rank locates and
+     * evaluates it. Collective. (deal.II 9.4's RemotePointEvaluation
+     * searched all active cells for every point: 77 % of a step of the 3D
+     * ball at 2.5 mm on two ranks.)
      */
     template <int dim>
     std::vector<FieldValues<dim>>

@@ -41,8 +41,9 @@ namespace vefs
    * gradient-augmented level set a four-stage Runge-Kutta trace, whose
    * Jacobian J = dX/dx updates the level set gradient). Feet may lie many
    * cells away: in the local part of the mesh the locator finds their cell;
-   * feet in cells of other MPI ranks go to the rank p4est names. Feet outside the cavity
-   * are moved back onto its walls, or wrapped around periodic walls.
+   * feet in cells of other MPI ranks go to the rank p4est names. Feet
+   * outside the cavity are moved back onto its walls, or wrapped around
+   * periodic walls.
    * The fields are interpolated at the feet as @p interpolation says
    * (FieldHermite for the cubic ones).
    */
