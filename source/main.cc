@@ -8,8 +8,10 @@
 #include <vefs/stokes_step.h>
 #include <vefs/stop_signal.h>
 
+#include <chrono>
 #include <iostream>
 #include <sstream>
+#include <thread>
 
 namespace
 {
@@ -44,6 +46,38 @@ namespace
   }
 
   /**
+   * An error vefs does not expect (a deal.II or standard exception) may be
+   * thrown on one rank alone, while the others wait for it in a collective
+   * call for ever. If all ranks report one within a minute, the run ends
+   * with the message like any other error; otherwise this rank prints it
+   * and aborts them all. @p errors: a copy of MPI_COMM_WORLD kept for this,
+   * so that the check cannot meet a collective call of the run.
+   */
+  vefs::RunEnd
+  unexpected_error(const std::string &message, const MPI_Comm errors)
+  {
+    if (dealii::Utilities::MPI::n_mpi_processes(errors) == 1)
+      return {1, message};
+    MPI_Request all_failed;
+    MPI_Ibarrier(errors, &all_failed);
+    const auto start = std::chrono::steady_clock::now();
+    int        done  = 0;
+    while (!done &&
+           std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
+      {
+        MPI_Test(&all_failed, &done, MPI_STATUS_IGNORE);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+    if (done)
+      return {1, message};
+    std::cerr << "vefs: rank "
+              << dealii::Utilities::MPI::this_mpi_process(errors)
+              << " alone: " << message << std::endl;
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    return {1, message};
+  }
+
+  /**
    * Run the scene; returns how it ended, with status 1 and the error if
    * one stopped it. The error is caught while the simulator still exists,
    * so that it closes normally (its timer would otherwise complain about
@@ -54,7 +88,8 @@ namespace
   simulate(const vefs::Parameters         &parameters,
            const dealii::ParameterHandler &prm,
            const std::string              &where,
-           const std::string              &checkpoint)
+           const std::string              &checkpoint,
+           const MPI_Comm                  errors)
   {
     vefs::Simulator<dim> simulator(parameters, prm, checkpoint);
     try
@@ -75,11 +110,11 @@ namespace
       }
     catch (const dealii::ExceptionBase &error)
       {
-        return {1, message_of(error)};
+        return unexpected_error(message_of(error), errors);
       }
     catch (const std::exception &error)
       {
-        return {1, error.what()};
+        return unexpected_error(error.what(), errors);
       }
   }
 } // namespace
@@ -91,6 +126,8 @@ main(int argc, char *argv[])
   using namespace vefs;
 
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  MPI_Comm                         errors;
+  MPI_Comm_dup(MPI_COMM_WORLD, &errors);
   const bool  root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::string file, resume_directory;
   auto        fail = [&](const std::string &what) {
@@ -183,9 +220,10 @@ main(int argc, char *argv[])
   install_stop_handlers();
   try
     {
-      const RunEnd end = parameters.dimension == 2
-                           ? simulate<2>(parameters, prm, where, checkpoint)
-                           : simulate<3>(parameters, prm, where, checkpoint);
+      const RunEnd end =
+        parameters.dimension == 2
+          ? simulate<2>(parameters, prm, where, checkpoint, errors)
+          : simulate<3>(parameters, prm, where, checkpoint, errors);
       if (end.status != 0)
         {
           fail(end.message);
