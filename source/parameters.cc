@@ -170,7 +170,8 @@ namespace vefs
         "only the exponential update scales tau grad u down where it is "
         "larger: the stress then stores less elastic energy than the "
         "velocity would, which the energies in the statistics show as "
-        "dissipation. Needs 'Solver/Stress update = exponential'.");
+        "dissipation. Needs 'Solver/Stress update = exponential' and a "
+        "positive 'Maximum strain per step'.");
       prm.declare_entry("Maximum steps",
                         "100000",
                         Patterns::Integer(1),
