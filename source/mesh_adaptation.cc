@@ -279,6 +279,32 @@ namespace vefs
     return changed;
   }
 
+  template <int dim>
+  unsigned int
+  count_coarse_surface_cells(const TransportedFields<dim> &fields,
+                             const unsigned int            max_level)
+  {
+    constexpr unsigned int c     = TransportedFields<dim>::level_set_component;
+    unsigned int           count = 0;
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          static_cast<unsigned int>(cell->level()) < max_level)
+        {
+          bool inside = false, outside = false;
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const double psi = fields.fields(cell->vertex_dof_index(v, c));
+              inside |= psi < 0;
+              outside |= psi > 0;
+            }
+          if (inside && outside)
+            ++count;
+        }
+    return Utilities::MPI::sum(
+      count,
+      fields.dof_handler.get_triangulation().get_communicator());
+  }
+
   template bool
   adapt_mesh<2>(parallel::distributed::Triangulation<2> &,
                 TransportedFields<2> &,
@@ -291,4 +317,11 @@ namespace vefs
                 const MeshLevels &,
                 const unsigned int,
                 const LevelSetInterpolation);
+
+  template unsigned int
+  count_coarse_surface_cells<2>(const TransportedFields<2> &,
+                                const unsigned int);
+  template unsigned int
+  count_coarse_surface_cells<3>(const TransportedFields<3> &,
+                                const unsigned int);
 } // namespace vefs

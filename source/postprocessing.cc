@@ -208,6 +208,8 @@ namespace vefs
     add_column("wall_height", [](const S &s) { return s.wall_height; });
     add_column("cells", [](const S &s) { return s.cells; });
     add_column("liquid_cells", [](const S &s) { return s.liquid_cells; });
+    add_column("coarse_surface_cells",
+               [](const S &s) { return s.coarse_surface_cells; });
     add_column("dofs", [](const S &s) { return s.dofs; });
     add_column("linear_iterations",
                [](const S &s) { return s.linear_iterations; });
@@ -315,7 +317,9 @@ namespace vefs
              "wall_height: highest liquid on the x- wall; lower_x, "
              "upper_x, ...: the box around the liquid; centroid_velocity_x, "
              "...: mean velocity of the liquid; total_energy: kinetic + "
-             "potential + elastic.\n"
+             "potential + elastic; coarse_surface_cells: cells crossed by "
+             "the surface right after the advection that are coarser than "
+             "the finest level (0 if the band kept up with the surface).\n"
           << column_header() << '\n';
         header_written = true;
       }

@@ -518,6 +518,8 @@ namespace vefs
         // liquid cells.
         {
           TimerOutput::Scope scope(timer, "2 mesh adaptation");
+          statistics.coarse_surface_cells =
+            count_coarse_surface_cells(fields, parameters.max_level);
           if (remap)
             {
               levels.expect_cfl(

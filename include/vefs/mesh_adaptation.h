@@ -61,6 +61,16 @@ namespace vefs
              const MeshLevels                          &levels,
              const unsigned int                         max_cycles,
              const LevelSetInterpolation                interpolation);
+
+  /**
+   * The cells the surface (psi = 0) crosses that are coarser than
+   * @p max_level, over all ranks: right after an advection, where the band
+   * of finest cells did not keep up with the surface.
+   */
+  template <int dim>
+  unsigned int
+  count_coarse_surface_cells(const TransportedFields<dim> &fields,
+                             const unsigned int            max_level);
 } // namespace vefs
 
 #endif

@@ -38,17 +38,22 @@ namespace vefs
      */
     Point<dim>   liquid_lower;
     Point<dim>   liquid_upper;
-    double       kinetic_energy    = 0;
-    double       potential_energy  = 0;
-    double       elastic_energy    = 0;
-    double       max_velocity      = 0;
-    double       floor_extent      = 0;
-    double       wall_height       = 0;
-    unsigned int cells             = 0;
-    unsigned int liquid_cells      = 0;
-    unsigned int dofs              = 0;
-    unsigned int linear_iterations = 0;
-    double       wall_time         = 0;
+    double       kinetic_energy   = 0;
+    double       potential_energy = 0;
+    double       elastic_energy   = 0;
+    double       max_velocity     = 0;
+    double       floor_extent     = 0;
+    double       wall_height      = 0;
+    unsigned int cells            = 0;
+    unsigned int liquid_cells     = 0;
+    /**
+     * Cells crossed by the surface right after the advection that are not
+     * at the finest level (count_coarse_surface_cells()).
+     */
+    unsigned int coarse_surface_cells = 0;
+    unsigned int dofs                 = 0;
+    unsigned int linear_iterations    = 0;
+    double       wall_time            = 0;
     /**
      * Only with an exact final shape: the L1 shape error (at the end time,
      * NaN before) and the surface thickness.
