@@ -383,6 +383,33 @@ namespace vefs
       how.level_set_gradient = gradient_augmented;
       return how;
     }
+
+    /**
+     * The feet of the characteristics of all owned nodes by the two-stage
+     * (midpoint) trace, not yet moved back into the cavity.
+     */
+    template <int dim>
+    std::vector<Point<dim>>
+    midpoint_feet(const TransportedFields<dim> &fields,
+                  const double                  tau,
+                  const BoxMeshLocator<dim>    &locator)
+    {
+      const auto             &nodes = fields.nodes();
+      std::vector<Point<dim>> points(nodes.size());
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        points[i] = locator.fold_into_cavity(
+          nodes[i].point - 0.5 * tau * fields.velocity(nodes[i]));
+      const auto at_midpoints =
+        evaluate_at(points, fields, locator, Interpolation<dim>());
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        {
+          Tensor<1, dim> u;
+          for (unsigned int d = 0; d < dim; ++d)
+            u[d] = at_midpoints[i][d];
+          points[i] = nodes[i].point - tau * u;
+        }
+      return points;
+    }
   } // namespace
 
   template <int dim>
@@ -402,21 +429,7 @@ namespace vefs
     std::vector<Point<dim>>     feet(nodes.size());
     std::vector<Tensor<2, dim>> jacobians;
     if (!gradient_augmented)
-      {
-        // Two-stage (midpoint) trace.
-        for (unsigned int i = 0; i < nodes.size(); ++i)
-          points[i] = locator.fold_into_cavity(
-            nodes[i].point - 0.5 * tau * fields.velocity(nodes[i]));
-        const auto at_midpoints =
-          evaluate_at(points, fields, locator, Interpolation<dim>());
-        for (unsigned int i = 0; i < nodes.size(); ++i)
-          {
-            Tensor<1, dim> u;
-            for (unsigned int d = 0; d < dim; ++d)
-              u[d] = at_midpoints[i][d];
-            feet[i] = nodes[i].point - tau * u;
-          }
-      }
+      feet = midpoint_feet(fields, tau, locator);
     else
       {
         // Four-stage trace, with J = dX/dx for the gradient.
@@ -548,6 +561,34 @@ namespace vefs
   }
 
   template <int dim>
+  typename TransportedFields<dim>::VectorType
+  predict_level_set(const TransportedFields<dim> &fields,
+                    const double                  tau,
+                    const BoxMeshLocator<dim>    &locator)
+  {
+    constexpr unsigned int  c     = TransportedFields<dim>::level_set_component;
+    const auto             &nodes = fields.nodes();
+    std::vector<Point<dim>> feet  = midpoint_feet(fields, tau, locator);
+    std::vector<double>     beyond_contact(nodes.size());
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        beyond_contact[i] = locator.distance_beyond_contact_walls(feet[i]);
+        feet[i]           = locator.fold_into_cavity(feet[i]);
+      }
+    const auto at_feet =
+      evaluate_at(feet, fields, locator, Interpolation<dim>());
+
+    typename TransportedFields<dim>::VectorType predicted;
+    fields.initialize_vector(predicted);
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      predicted(nodes[i].dofs[c]) = std::max(at_feet[i][c], beyond_contact[i]);
+    predicted.update_ghost_values();
+    fields.constraints.distribute(predicted);
+    predicted.update_ghost_values();
+    return predicted;
+  }
+
+  template <int dim>
   std::vector<std::pair<double, Tensor<1, dim>>>
   level_set_at(const TransportedFields<dim>  &fields,
                const std::vector<Point<dim>> &points,
@@ -574,20 +615,24 @@ namespace vefs
     return result;
   }
 
-#define VEFS_INSTANTIATE(dim)                                                \
-  template void trace_back<dim>(                                             \
-    const TransportedFields<dim> &,                                          \
-    const std::array<typename TransportedFields<dim>::VectorType, dim> &,    \
-    const double,                                                            \
-    const BoxMeshLocator<dim> &,                                             \
-    std::vector<Point<dim>> &,                                               \
-    std::vector<Tensor<2, dim>> *,                                           \
-    std::vector<double> &);                                                  \
-  template std::vector<std::pair<double, Tensor<1, dim>>> level_set_at<dim>( \
-    const TransportedFields<dim> &,                                          \
-    const std::vector<Point<dim>> &,                                         \
-    const BoxMeshLocator<dim> &,                                             \
-    const LevelSetInterpolation);
+#define VEFS_INSTANTIATE(dim)                                                  \
+  template void trace_back<dim>(                                               \
+    const TransportedFields<dim> &,                                            \
+    const std::array<typename TransportedFields<dim>::VectorType, dim> &,      \
+    const double,                                                              \
+    const BoxMeshLocator<dim> &,                                               \
+    std::vector<Point<dim>> &,                                                 \
+    std::vector<Tensor<2, dim>> *,                                             \
+    std::vector<double> &);                                                    \
+  template std::vector<std::pair<double, Tensor<1, dim>>> level_set_at<dim>(   \
+    const TransportedFields<dim> &,                                            \
+    const std::vector<Point<dim>> &,                                           \
+    const BoxMeshLocator<dim> &,                                               \
+    const LevelSetInterpolation);                                              \
+  template typename TransportedFields<dim>::VectorType predict_level_set<dim>( \
+    const TransportedFields<dim> &,                                            \
+    const double,                                                              \
+    const BoxMeshLocator<dim> &);
   VEFS_INSTANTIATE(2)
   VEFS_INSTANTIATE(3)
 #undef VEFS_INSTANTIATE

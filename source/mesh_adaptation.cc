@@ -12,6 +12,7 @@ namespace vefs
     , bulk_level(parameters.bulk_level)
     , max_level(parameters.max_level)
     , band_width(parameters.band_width)
+    , band_predicted(parameters.band_predicted)
   {
     finest_cell_size = std::numeric_limits<double>::max();
     for (unsigned int d = 0; d < parameters.dimension; ++d)
@@ -26,9 +27,14 @@ namespace vefs
   MeshLevels::expect_cfl(const double cfl)
   {
     // The surface moves up to CFL finest cells per step: the band must be
-    // wider than that or the surface leaves the fine region.
-    band_half_width =
+    // wider than that or the surface leaves the fine region. Refined ahead of
+    // the surface, the band keeps its width, and a halo one level coarser
+    // covers where the surface can go, so that one refinement cycle brings
+    // the cells there to the finest level.
+    reach_half_width =
       std::max<double>(band_width, std::ceil(cfl) + 2) * finest_cell_size;
+    band_half_width =
+      band_predicted ? band_width * finest_cell_size : reach_half_width;
   }
 
   unsigned int
@@ -41,9 +47,12 @@ namespace vefs
         ? 0
         : std::min(std::abs(psi_lowest), std::abs(psi_highest)) /
             std::max(1., slope);
+    const unsigned int away = psi_highest < 0 ? bulk_level : min_level;
     if (distance <= band_half_width)
       return max_level;
-    return psi_highest < 0 ? bulk_level : min_level;
+    if (distance <= reach_half_width)
+      return std::max(away, std::max(max_level, 1u) - 1);
+    return away;
   }
 
   namespace
@@ -54,8 +63,9 @@ namespace vefs
      */
     template <int dim>
     double
-    level_set_slope(const TransportedFields<dim> &fields,
-                    const typename DoFHandler<dim>::active_cell_iterator &cell)
+    level_set_slope(
+      const typename TransportedFields<dim>::VectorType    &level_set,
+      const typename DoFHandler<dim>::active_cell_iterator &cell)
     {
       constexpr unsigned int c = TransportedFields<dim>::level_set_component;
       Point<dim>             center;
@@ -65,9 +75,33 @@ namespace vefs
       Tensor<1, dim>       gradient;
       for (const unsigned int v : cell->vertex_indices())
         for (unsigned int d = 0; d < dim; ++d)
-          gradient[d] += fields.fields(cell->vertex_dof_index(v, c)) *
+          gradient[d] += level_set(cell->vertex_dof_index(v, c)) *
                          internal::q1_shape(v, center, d) / extent[d];
       return gradient.norm();
+    }
+
+    /**
+     * The target level of @p cell from the level set slot of @p level_set
+     * (a vector with the layout of the fields).
+     */
+    template <int dim>
+    unsigned int
+    target_level(const MeshLevels                                  &levels,
+                 const typename TransportedFields<dim>::VectorType &level_set,
+                 const typename DoFHandler<dim>::active_cell_iterator &cell)
+    {
+      constexpr unsigned int c = TransportedFields<dim>::level_set_component;
+      double                 lowest  = std::numeric_limits<double>::max();
+      double                 highest = -lowest;
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const double psi = level_set(cell->vertex_dof_index(v, c));
+          lowest           = std::min(lowest, psi);
+          highest          = std::max(highest, psi);
+        }
+      return levels.target_level(lowest,
+                                 highest,
+                                 level_set_slope<dim>(level_set, cell));
     }
 
     /**
@@ -194,11 +228,12 @@ namespace vefs
 
   template <int dim>
   bool
-  adapt_mesh(parallel::distributed::Triangulation<dim> &triangulation,
-             TransportedFields<dim>                    &fields,
-             const MeshLevels                          &levels,
-             const unsigned int                         max_cycles,
-             const LevelSetInterpolation                interpolation)
+  adapt_mesh(parallel::distributed::Triangulation<dim>   &triangulation,
+             TransportedFields<dim>                      &fields,
+             const MeshLevels                            &levels,
+             const unsigned int                           max_cycles,
+             const LevelSetInterpolation                  interpolation,
+             typename TransportedFields<dim>::VectorType *surface_ahead)
   {
     constexpr unsigned int c = TransportedFields<dim>::level_set_component;
     bool                   changed = false;
@@ -207,22 +242,19 @@ namespace vefs
         for (const auto &cell : fields.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              double lowest  = std::numeric_limits<double>::max();
-              double highest = -lowest;
+              bool has_liquid = false;
               for (const unsigned int v : cell->vertex_indices())
-                {
-                  const double psi =
-                    fields.fields(cell->vertex_dof_index(v, c));
-                  lowest  = std::min(lowest, psi);
-                  highest = std::max(highest, psi);
-                }
+                if (fields.fields(cell->vertex_dof_index(v, c)) < 0)
+                  has_liquid = true;
               // Remembered for the partitioner (children inherit it): the
               // flow is solved on liquid cells only.
-              cell->set_material_id(lowest < 0 ? liquid_material_id : 0);
-              const unsigned int target =
-                levels.target_level(lowest,
-                                    highest,
-                                    level_set_slope(fields, cell));
+              cell->set_material_id(has_liquid ? liquid_material_id : 0);
+              unsigned int target =
+                target_level<dim>(levels, fields.fields, cell);
+              if (surface_ahead)
+                target =
+                  std::max(target,
+                           target_level<dim>(levels, *surface_ahead, cell));
               const unsigned int level = cell->level();
               if (level < target)
                 {
@@ -248,8 +280,10 @@ namespace vefs
         parallel::distributed::
           SolutionTransfer<dim, typename TransportedFields<dim>::VectorType>
             transfer(fields.dof_handler);
-        const std::vector<const typename TransportedFields<dim>::VectorType *>
+        std::vector<const typename TransportedFields<dim>::VectorType *>
           old_vectors = {&fields.fields, &fields.level_set_gradient};
+        if (surface_ahead)
+          old_vectors.push_back(surface_ahead);
         transfer.prepare_for_coarsening_and_refinement(old_vectors);
         std::unique_ptr<HermiteRefinement<dim>> hermite_refinement;
         if (interpolation != LevelSetInterpolation::linear)
@@ -260,17 +294,25 @@ namespace vefs
         triangulation.execute_coarsening_and_refinement();
 
         fields.setup_dofs();
-        std::vector<typename TransportedFields<dim>::VectorType> transferred(2);
+        std::vector<typename TransportedFields<dim>::VectorType> transferred(
+          old_vectors.size());
+        std::vector<typename TransportedFields<dim>::VectorType *> new_vectors;
         for (auto &vector : transferred)
           {
             fields.initialize_vector(vector);
             vector.zero_out_ghost_values();
+            new_vectors.push_back(&vector);
           }
-        std::vector<typename TransportedFields<dim>::VectorType *> new_vectors =
-          {&transferred[0], &transferred[1]};
         transfer.interpolate(new_vectors);
         fields.fields             = transferred[0];
         fields.level_set_gradient = transferred[1];
+        if (surface_ahead)
+          {
+            *surface_ahead = transferred[2];
+            surface_ahead->update_ghost_values();
+            fields.constraints.distribute(*surface_ahead);
+            surface_ahead->update_ghost_values();
+          }
         if (hermite_refinement)
           hermite_refinement->unpack(fields);
         fields.finalize();
@@ -284,6 +326,16 @@ namespace vefs
   count_coarse_surface_cells(const TransportedFields<dim> &fields,
                              const unsigned int            max_level)
   {
+    return count_coarse_surface_cells(fields, fields.fields, max_level);
+  }
+
+  template <int dim>
+  unsigned int
+  count_coarse_surface_cells(
+    const TransportedFields<dim>                      &fields,
+    const typename TransportedFields<dim>::VectorType &level_set,
+    const unsigned int                                 max_level)
+  {
     constexpr unsigned int c     = TransportedFields<dim>::level_set_component;
     unsigned int           count = 0;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
@@ -293,7 +345,7 @@ namespace vefs
           bool inside = false, outside = false;
           for (const unsigned int v : cell->vertex_indices())
             {
-              const double psi = fields.fields(cell->vertex_dof_index(v, c));
+              const double psi = level_set(cell->vertex_dof_index(v, c));
               inside |= psi < 0;
               outside |= psi > 0;
             }
@@ -305,18 +357,45 @@ namespace vefs
       fields.dof_handler.get_triangulation().get_communicator());
   }
 
+  template <int dim>
+  void
+  refine_ahead_of_surface(
+    parallel::distributed::Triangulation<dim>   &triangulation,
+    TransportedFields<dim>                      &fields,
+    const MeshLevels                            &levels,
+    const unsigned int                           max_cycles,
+    const LevelSetInterpolation                  interpolation,
+    typename TransportedFields<dim>::VectorType &surface_ahead)
+  {
+    // The halo makes one cycle enough unless the surface moves farther than
+    // the last step's: more cycles then, until the predicted surface lies
+    // in finest cells (each cycle transfers all fields).
+    for (unsigned int cycle = 0; cycle < max_cycles; ++cycle)
+      if (!adapt_mesh(triangulation,
+                      fields,
+                      levels,
+                      1,
+                      interpolation,
+                      &surface_ahead) ||
+          count_coarse_surface_cells(fields, surface_ahead, levels.max_level) ==
+            0)
+        break;
+  }
+
   template bool
   adapt_mesh<2>(parallel::distributed::Triangulation<2> &,
                 TransportedFields<2> &,
                 const MeshLevels &,
                 const unsigned int,
-                const LevelSetInterpolation);
+                const LevelSetInterpolation,
+                TransportedFields<2>::VectorType *);
   template bool
   adapt_mesh<3>(parallel::distributed::Triangulation<3> &,
                 TransportedFields<3> &,
                 const MeshLevels &,
                 const unsigned int,
-                const LevelSetInterpolation);
+                const LevelSetInterpolation,
+                TransportedFields<3>::VectorType *);
 
   template unsigned int
   count_coarse_surface_cells<2>(const TransportedFields<2> &,
@@ -324,4 +403,19 @@ namespace vefs
   template unsigned int
   count_coarse_surface_cells<3>(const TransportedFields<3> &,
                                 const unsigned int);
+
+  template void
+  refine_ahead_of_surface<2>(parallel::distributed::Triangulation<2> &,
+                             TransportedFields<2> &,
+                             const MeshLevels &,
+                             const unsigned int,
+                             const LevelSetInterpolation,
+                             TransportedFields<2>::VectorType &);
+  template void
+  refine_ahead_of_surface<3>(parallel::distributed::Triangulation<3> &,
+                             TransportedFields<3> &,
+                             const MeshLevels &,
+                             const unsigned int,
+                             const LevelSetInterpolation,
+                             TransportedFields<3>::VectorType &);
 } // namespace vefs

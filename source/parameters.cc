@@ -372,12 +372,27 @@ namespace vefs
                         "4",
                         Patterns::Double(1),
                         "Half width of the finest band around the free "
-                        "surface, in finest cells. The band is widened to "
-                        "CFL + 2 cells (the target CFL, or the CFL number "
-                        "of the last step if larger) so that the surface "
-                        "cannot leave it within a step. Distances are "
+                        "surface, in finest cells. With 'Band placement = "
+                        "widened' the band is widened to CFL + 2 cells (the "
+                        "target CFL, or the CFL number of the last step if "
+                        "larger) so that the surface cannot leave it within "
+                        "a step. Distances are "
                         "estimated as psi / |grad psi| where the level set "
                         "is steeper than a distance.");
+      prm.declare_entry(
+        "Band placement",
+        "widened",
+        Patterns::Selection("widened|predicted"),
+        "How the band of finest cells keeps up with a moving surface. "
+        "widened: the band is widened by the CFL number, as 'Band width' "
+        "says, and the mesh is adapted once per step, after the advection. "
+        "predicted: before each advection the level set is traced along the "
+        "characteristics on the present mesh (a prediction of where the "
+        "surface will be) and the mesh is refined around the present and the "
+        "predicted surface; the band stays 'Band width' cells wide at any "
+        "CFL number, so large steps no longer fill the mesh with fine cells, "
+        "at the cost of one more trace and a few more adaptation cycles per "
+        "step. Needs 'Remap distance = 0'.");
       prm.declare_entry("Extension layers",
                         "4",
                         Patterns::Integer(1, 100),
@@ -729,6 +744,7 @@ namespace vefs
     bulk_level       = prm.get_integer("Bulk level");
     max_level        = prm.get_integer("Maximum level");
     band_width       = prm.get_double("Band width");
+    band_predicted   = prm.get("Band placement") == "predicted";
     extension_layers = prm.get_integer("Extension layers");
     extend_outside_velocity =
       prm.get("Outside velocity of cut cells") == "extension";
@@ -953,6 +969,11 @@ namespace vefs
             "'local' scales the strain down in the exponential stress update "
             "only: it needs 'Solver/Stress update = exponential' and a "
             "positive 'Time/Maximum strain per step'");
+    require(!band_predicted || remap_distance == 0,
+            "Mesh refinement/Band placement",
+            "'predicted' adapts the mesh before every advection; between "
+            "remaps the mesh stays: it needs 'Mesh refinement/Remap "
+            "distance = 0'");
     require(min_level <= bulk_level && bulk_level <= max_level,
             "Mesh refinement/Bulk level",
             "levels must satisfy Minimum level <= Bulk level <= Maximum "

@@ -481,15 +481,34 @@ namespace vefs
 
         // 1. Advection: phi and u along the characteristics; between
         // remaps the level set from the last remap through all steps since.
+        // The velocity at mid-step keeps the trace of a prescribed one
+        // second order.
+        if (prescribed_velocity)
+          prescribed_velocity->set_time(statistics.time + tau / 2);
+        if (parameters.band_predicted)
+          {
+            // Refine where the surface will be before it gets there: the
+            // band need not be widened by the CFL number.
+            typename TransportedFields<dim>::VectorType surface_ahead;
+            {
+              TimerOutput::Scope scope(timer, "1 advection: predict");
+              if (prescribed_velocity)
+                fields.set_velocity(*prescribed_velocity);
+              surface_ahead = predict_level_set(fields, tau, *locator);
+            }
+            TimerOutput::Scope scope(timer, "1 advection: refine ahead");
+            refine_ahead_of_surface(triangulation,
+                                    fields,
+                                    levels,
+                                    levels.max_level - levels.min_level,
+                                    parameters.level_set_interpolation,
+                                    surface_ahead);
+          }
         bool remap = true;
         {
           TimerOutput::Scope scope(timer, "1 advection");
           if (prescribed_velocity)
-            {
-              // The velocity at mid-step keeps the trace second order.
-              prescribed_velocity->set_time(statistics.time + tau / 2);
-              fields.set_velocity(*prescribed_velocity);
-            }
+            fields.set_velocity(*prescribed_velocity);
           level_set_history.add_step(fields, tau);
           advect_along_characteristics(
             fields,

@@ -75,6 +75,19 @@ namespace vefs
              std::vector<double>         &beyond_contact);
 
   /**
+   * Where the surface will be after the next advection, without changing
+   * @p fields: the Q1 level set at the feet of the two-stage trace of every
+   * node, in the level set slot of a vector with the layout of the fields
+   * (the other slots are zero). For refining the mesh ahead of the surface
+   * ('Band placement = predicted').
+   */
+  template <int dim>
+  typename TransportedFields<dim>::VectorType
+  predict_level_set(const TransportedFields<dim> &fields,
+                    const double                  tau,
+                    const BoxMeshLocator<dim>    &locator);
+
+  /**
    * The level set of @p fields at @p points anywhere in the mesh,
    * interpolated as @p interpolation says, with its gradient (gradient
    * augmented only; zero otherwise).

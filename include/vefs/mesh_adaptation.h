@@ -22,6 +22,8 @@ namespace vefs
     /**
      * Widen the band for steps of @p cfl finest cells (at least the
      * parameter "Band width"): the surface must not leave it in one step.
+     * With 'Band placement = predicted' the band keeps its width, and
+     * the cells in reach of the surface are kept one level below the finest.
      */
     void
     expect_cfl(const double cfl);
@@ -31,6 +33,8 @@ namespace vefs
      * @p psi_highest] and whose level set slope is @p slope. Where psi has
      * been stretched (slope above 1) psi underestimates the distance to the
      * surface by that factor, and the band is measured in psi / slope.
+     * Beyond the band but within the surface's reach: one level below the
+     * finest (at least the level away from the surface).
      */
     unsigned int
     target_level(const double psi_lowest,
@@ -40,10 +44,14 @@ namespace vefs
     /** Size of the finest cells (their shortest edge). */
     double finest_cell_size;
 
+    const unsigned int min_level, bulk_level, max_level;
+
   private:
-    unsigned int min_level, bulk_level, max_level;
-    double       band_width;
-    double       band_half_width;
+    double band_width;
+    bool   band_predicted;
+    double band_half_width;
+    /** How far the surface can move in a step (at least the band). */
+    double reach_half_width;
   };
 
   /**
@@ -52,15 +60,20 @@ namespace vefs
    * the mesh stops changing. Returns true if it changed. In the time loop
    * one cycle a step suffices: the band is wider than the surface moves.
    * Unless @p interpolation is linear, the level set at new vertices is the
-   * cubic one of the refined cell, not the Q1 one.
+   * cubic one of the refined cell, not the Q1 one. If @p surface_ahead is
+   * given (the level set the next advection will give, predict_level_set()),
+   * cells take the finer of the levels the two level sets ask for, and
+   * @p surface_ahead is transferred too.
    */
   template <int dim>
   bool
-  adapt_mesh(parallel::distributed::Triangulation<dim> &triangulation,
-             TransportedFields<dim>                    &fields,
-             const MeshLevels                          &levels,
-             const unsigned int                         max_cycles,
-             const LevelSetInterpolation                interpolation);
+  adapt_mesh(
+    parallel::distributed::Triangulation<dim>   &triangulation,
+    TransportedFields<dim>                      &fields,
+    const MeshLevels                            &levels,
+    const unsigned int                           max_cycles,
+    const LevelSetInterpolation                  interpolation,
+    typename TransportedFields<dim>::VectorType *surface_ahead = nullptr);
 
   /**
    * The cells the surface (psi = 0) crosses that are coarser than
@@ -71,6 +84,31 @@ namespace vefs
   unsigned int
   count_coarse_surface_cells(const TransportedFields<dim> &fields,
                              const unsigned int            max_level);
+
+  /** The same for the level set slot of @p level_set (layout of the fields). */
+  template <int dim>
+  unsigned int
+  count_coarse_surface_cells(
+    const TransportedFields<dim>                      &fields,
+    const typename TransportedFields<dim>::VectorType &level_set,
+    const unsigned int                                 max_level);
+
+  /**
+   * Before an advection ('Band placement = predicted'): adapt the mesh
+   * toward the present surface and @p surface_ahead, the level set the
+   * advection will give (predict_level_set()), one cycle at a time until
+   * the predicted surface lies in cells of the finest level, at most
+   * @p max_cycles times.
+   */
+  template <int dim>
+  void
+  refine_ahead_of_surface(
+    parallel::distributed::Triangulation<dim>   &triangulation,
+    TransportedFields<dim>                      &fields,
+    const MeshLevels                            &levels,
+    const unsigned int                           max_cycles,
+    const LevelSetInterpolation                  interpolation,
+    typename TransportedFields<dim>::VectorType &surface_ahead);
 } // namespace vefs
 
 #endif

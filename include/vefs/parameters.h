@@ -158,6 +158,11 @@ namespace vefs
     unsigned int bulk_level;
     unsigned int max_level;
     double       band_width;
+    /**
+     * Whether the band is refined ahead of the surface before each advection
+     * ('Band placement = predicted') instead of widened by the CFL number.
+     */
+    bool         band_predicted;
     unsigned int extension_layers;
     /**
      * Whether the vertices of cut cells outside the liquid take the extended
