@@ -90,12 +90,16 @@ namespace vefs
     // ... and its surface, at most about the largest cross-section of the
     // cavity, carries a band of finest cells as wide as the band width
     // (or CFL + 2) on either side, twice that with the grading around it.
+    // Refined ahead of the surface, the band keeps its width and the rest
+    // of the CFL + 2 cells is one level coarser (2^dim times fewer cells).
     std::sort(extent.begin(), extent.end());
     double cross_section = 1;
     for (unsigned int d = 1; d < dim; ++d)
       cross_section *= extent[d];
     const double h     = smallest_coarse_size / std::pow(2., p.max_level);
-    const double width = std::max(p.band_width, p.target_cfl + 2);
+    const double reach = std::max(p.band_width, p.target_cfl + 2);
+    const double width =
+      p.band_predicted ? p.band_width + reach / std::pow(2., dim) : reach;
     const double band =
       2 * 2 * width * cross_section / std::pow(h, static_cast<int>(dim) - 1);
     return bulk + band;
