@@ -583,7 +583,7 @@ namespace vefs
     for (unsigned int i = 0; i < nodes.size(); ++i)
       predicted(nodes[i].dofs[c]) = std::max(at_feet[i][c], beyond_contact[i]);
     predicted.update_ghost_values();
-    fields.constraints.distribute(predicted);
+    fields.distribute_constraints(predicted);
     predicted.update_ghost_values();
     return predicted;
   }

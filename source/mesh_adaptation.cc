@@ -310,7 +310,7 @@ namespace vefs
           {
             *surface_ahead = transferred[2];
             surface_ahead->update_ghost_values();
-            fields.constraints.distribute(*surface_ahead);
+            fields.distribute_constraints(*surface_ahead);
             surface_ahead->update_ghost_values();
           }
         if (hermite_refinement)

@@ -38,6 +38,7 @@ namespace vefs
 
     initialize_vector(fields);
     initialize_vector(level_set_gradient);
+    localize_constraints();
 
     // FE_Q(1)^n_components: the i-th degree of freedom of a vertex belongs to
     // component i, so one vertex carries all fields of one node.
@@ -118,8 +119,65 @@ namespace vefs
     for (VectorType *vector : {&fields, &level_set_gradient})
       {
         vector->update_ghost_values();
-        constraints.distribute(*vector);
+        distribute_constraints(*vector);
         vector->update_ghost_values();
+      }
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::localize_constraints()
+  {
+    const auto &partitioner = *fields.get_partitioner();
+    constrained_entries.clear();
+    inhomogeneities.clear();
+    sources_start.assign(1, 0);
+    sources.clear();
+    bool local = true;
+    for (const auto &line : constraints.get_lines())
+      if (owned_dofs.is_element(line.index))
+        {
+          constrained_entries.push_back(
+            partitioner.global_to_local(line.index));
+          inhomogeneities.push_back(line.inhomogeneity);
+          for (const auto &[source, weight] : line.entries)
+            {
+              if (!partitioner.in_local_range(source) &&
+                  !partitioner.is_ghost_entry(source))
+                local = false;
+              else
+                sources.emplace_back(partitioner.global_to_local(source),
+                                     weight);
+            }
+          sources_start.push_back(sources.size());
+        }
+    constraints_are_local = !Utilities::MPI::logical_or(
+      !local,
+      dof_handler.get_triangulation().get_communicator());
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::distribute_constraints(VectorType &vector) const
+  {
+    if (!constraints_are_local)
+      {
+        constraints.distribute(vector);
+        return;
+      }
+    Assert(vector.get_partitioner()->locally_owned_size() ==
+               fields.get_partitioner()->locally_owned_size() &&
+             vector.get_partitioner()->n_ghost_indices() ==
+               fields.get_partitioner()->n_ghost_indices(),
+           ExcMessage("A vector with the layout of the fields."));
+    // Constraints are closed: no source is itself constrained, so the
+    // entries can be written in place, in the order deal.II sums them.
+    for (unsigned int k = 0; k < constrained_entries.size(); ++k)
+      {
+        double value = inhomogeneities[k];
+        for (unsigned int s = sources_start[k]; s < sources_start[k + 1]; ++s)
+          value += vector.local_element(sources[s].first) * sources[s].second;
+        vector.local_element(constrained_entries[k]) = value;
       }
   }
 

@@ -93,6 +93,16 @@ namespace vefs
     void
     finalize();
 
+    /**
+     * Set the constrained entries (hanging nodes, periodic walls) of
+     * @p vector, a vector with the layout of the fields whose ghost values
+     * are up to date; its ghost values are stale afterwards. The same
+     * values as AffineConstraints::distribute(), without its ghosted copy
+     * of the whole vector (which costs a new MPI partitioner per call).
+     */
+    void
+    distribute_constraints(VectorType &vector) const;
+
     /** Vector with the layout of the fields, ghosted. */
     void
     initialize_vector(VectorType &vector) const;
@@ -132,8 +142,21 @@ namespace vefs
     VectorType level_set_gradient;
 
   private:
+    /** The owned lines of @p constraints in local vector indices. */
+    void
+    localize_constraints();
+
     const std::vector<unsigned int> periodic_directions;
     std::vector<Node>               owned_nodes;
+    /**
+     * Whether every source of an owned constrained entry is owned or a ghost
+     * (then distribute_constraints() uses the local lines below).
+     */
+    bool                                         constraints_are_local = false;
+    std::vector<unsigned int>                    constrained_entries;
+    std::vector<double>                          inhomogeneities;
+    std::vector<unsigned int>                    sources_start;
+    std::vector<std::pair<unsigned int, double>> sources;
   };
 } // namespace vefs
 
