@@ -9,6 +9,7 @@
 #include <deal.II/lac/block_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/numerics/vector_tools_boundary.h>
@@ -233,10 +234,10 @@ namespace vefs
     for (unsigned int i = 0; i < dim + 1; ++i)
       for (unsigned int j = 0; j < dim + 1; ++j)
         coupling[i][j] = DoFTools::always;
-    TrilinosWrappers::BlockSparsityPattern pattern(owned_partitioning,
-                                                   owned_partitioning,
-                                                   relevant_partitioning,
-                                                   comm);
+    // Built in deal.II's pattern and handed to Epetra once: inserting the
+    // entries of each cell and face into Epetra's graph one by one took most
+    // of the setup of the 3D ball.
+    BlockDynamicSparsityPattern pattern(relevant_partitioning);
     DoFTools::make_sparsity_pattern(dof_handler,
                                     coupling,
                                     pattern,
@@ -255,43 +256,24 @@ namespace vefs
       [&](const auto &, const auto &, const auto &dofs) {
         pattern_constraints.add_entries_local_to_global(dofs, pattern, false);
       });
-    pattern.compress();
+    SparsityTools::distribute_sparsity_pattern(pattern,
+                                               dof_handler.locally_owned_dofs(),
+                                               comm,
+                                               relevant_dofs);
     system_matrix.clear();
-    system_matrix.reinit(pattern);
+    system_matrix.reinit(owned_partitioning, pattern, comm);
 
-    for (unsigned int i = 0; i < dim + 1; ++i)
-      for (unsigned int j = 0; j < dim + 1; ++j)
-        coupling[i][j] =
-          (i == dim && j == dim) ? DoFTools::always : DoFTools::none;
-    TrilinosWrappers::BlockSparsityPattern schur_pattern(owned_partitioning,
-                                                         owned_partitioning,
-                                                         relevant_partitioning,
-                                                         comm);
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    coupling,
-                                    schur_pattern,
-                                    pattern_constraints,
-                                    false,
-                                    Utilities::MPI::this_mpi_process(comm));
-    // The velocity block comes first: the pressure unknowns are the rest.
-    const types::global_dof_index        n_u = owned_partitioning[0].size();
-    std::vector<types::global_dof_index> pressure_dofs;
-    ghost_penalty.for_each_face(
-      dof_handler,
-      *domain,
-      false,
-      [&](const auto &, const auto &, const auto &dofs) {
-        pressure_dofs.clear();
-        for (const auto dof : dofs)
-          if (dof >= n_u)
-            pressure_dofs.push_back(dof);
-        pattern_constraints.add_entries_local_to_global(pressure_dofs,
-                                                        schur_pattern,
-                                                        false);
-      });
-    schur_pattern.compress();
+    // The Schur approximation couples the pressures as the pressure block of
+    // the system does (cells and ghost penalty alike); the constrained
+    // velocities keep the diagonal entry that their rows receive.
+    BlockDynamicSparsityPattern schur_pattern(relevant_partitioning);
+    for (const auto &entry : pattern.block(1, 1))
+      schur_pattern.block(1, 1).add(entry.row(), entry.column());
+    for (const auto i : relevant_partitioning[0])
+      if (pattern_constraints.is_constrained(i))
+        schur_pattern.block(0, 0).add(i, i);
     schur_matrix.clear();
-    schur_matrix.reinit(schur_pattern);
+    schur_matrix.reinit(owned_partitioning, schur_pattern, comm);
 
     system_rhs.reinit(owned_partitioning, comm);
     lumped_pressure_mass.reinit(owned_partitioning, comm);
