@@ -51,13 +51,8 @@ namespace vefs
         if (component[i] == dim)
           pressure_dofs.push_back(i);
       }
-    stretching.resize(n_dofs);
-    grad_u.resize(n_dofs);
-    phi_u.resize(n_dofs);
-    eps_u.resize(n_dofs);
-    div_u.resize(n_dofs);
-    phi_p.resize(n_dofs);
-    grad_p.resize(n_dofs);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      dof_of[component[i]][vertex[i]] = i;
   }
 
   template <int dim>
@@ -133,37 +128,20 @@ namespace vefs
     if (is_cut)
       add_surface_terms(cell, h);
 
+    const unsigned int n_vertices  = BoxCellValues<dim>::n_vertices;
+    const double       mass_factor = rho / tau;
     for (unsigned int q = 0; q < values.size(); ++q)
       {
-        // Each shape function is the Q1 function of its vertex in one
-        // component.
-        for (unsigned int k = 0; k < n_dofs; ++k)
-          {
-            const double          phi  = values.shape[q][vertex[k]];
-            const Tensor<1, dim> &grad = values.gradient[q][vertex[k]];
-            const unsigned int    c    = component[k];
-            phi_u[k]                   = Tensor<1, dim>();
-            grad_u[k]                  = Tensor<2, dim>();
-            phi_p[k]                   = 0;
-            grad_p[k]                  = Tensor<1, dim>();
-            if (c < dim)
-              {
-                phi_u[k][c]  = phi;
-                grad_u[k][c] = grad;
-              }
-            else
-              {
-                phi_p[k]  = phi;
-                grad_p[k] = grad;
-              }
-            eps_u[k] = symmetrize(grad_u[k]);
-            div_u[k] = trace(grad_u[k]);
-          }
+        // Every dof is the Q1 function N of its vertex in one component, so
+        // the cell matrix follows from products of N and grad N per vertex
+        // pair; written out, the assembly costs a fraction of the tensor
+        // algebra over all dof pairs.
+        const auto  &N   = values.shape[q];
+        const auto  &G   = values.gradient[q];
         const double JxW = values.JxW[q];
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          if (component[i] == dim)
-            pressure_mass(i) += phi_p[i] * JxW / mu;
-        Tensor<1, dim> forcing = rho / tau * u_star[q] + rho * gravity;
+        for (unsigned int I = 0; I < n_vertices; ++I)
+          pressure_mass(dof_of[dim][I]) += N[I] * JxW / mu;
+        const Tensor<1, dim> forcing = mass_factor * u_star[q] + rho * gravity;
         // The explicit part of the stress, div sigma* times its factor, is
         // a force in the strong residual of the pressure stabilisation.
         Tensor<1, dim>          stabilized_forcing = forcing;
@@ -176,50 +154,57 @@ namespace vefs
               explicit_stress += rheology.explicit_strain_stress(sigma_star[q],
                                                                  grad_u_star[q],
                                                                  tau);
-            // The geometric term 2 theta^2 k tau (grad u sigma*) : eps(v).
-            const Tensor<2, dim> sigma(sigma_star[q]);
-            for (unsigned int j = 0; j < n_dofs; ++j)
-              if (component[j] < dim)
-                stretching[j] = geometric_factor * grad_u[j] * sigma;
+            for (unsigned int J = 0; J < n_vertices; ++J)
+              sigma_gradient[J] = sigma_star[q] * G[J];
           }
-        // Only the blocks that can be non-zero: this loop is most of
-        // the assembly, in 3D especially.
-        for (unsigned int i = 0; i < n_dofs; ++i)
+        for (unsigned int I = 0; I < n_vertices; ++I)
           {
-            const bool i_is_u = component[i] < dim;
-            for (unsigned int j = 0; j < n_dofs; ++j)
+            for (unsigned int J = 0; J < n_vertices; ++J)
               {
-                const bool j_is_u = component[j] < dim;
-                double     a_ij   = 0;
-                if (i_is_u && j_is_u)
+                const double NN = N[I] * N[J];
+                const double GG = G[I] * G[J];
+                // u-u: rho/tau N N + 2 mu eps : eps, and the geometric term
+                // 2 theta^2 k tau (grad u sigma*) : eps(v) (its factor
+                // geometric_factor):
+                // mu (delta_ab G_I.G_J + G_I,b G_J,a)
+                // + k/2 (delta_ab (sigma G_J).G_I + G_I,b (sigma G_J)_a).
+                double diagonal = mass_factor * NN + mu * GG;
+                if (with_stress)
+                  diagonal +=
+                    0.5 * geometric_factor * (sigma_gradient[J] * G[I]);
+                for (unsigned int a = 0; a < dim; ++a)
                   {
-                    a_ij = (component[i] == component[j]
-                              ? rho / tau * phi_u[i] * phi_u[j]
-                              : 0.) +
-                           2 * mu * eps_u[i] * eps_u[j];
-                    if (with_stress)
-                      a_ij += scalar_product(stretching[j], eps_u[i]);
+                    const unsigned int i = dof_of[a][I];
+                    for (unsigned int b = 0; b < dim; ++b)
+                      {
+                        double a_ij = mu * G[I][b] * G[J][a];
+                        if (with_stress)
+                          a_ij += 0.5 * geometric_factor * G[I][b] *
+                                  sigma_gradient[J][a];
+                        if (a == b)
+                          a_ij += diagonal;
+                        matrix(i, dof_of[b][J]) += a_ij * JxW;
+                      }
+                    // u-p: -(div v) p.
+                    matrix(i, dof_of[dim][J]) -= G[I][a] * N[J] * JxW;
+                    // p-u: -q div u and the PSPG term of rho/tau u.
+                    matrix(dof_of[dim][I], dof_of[a][J]) -=
+                      (N[I] * G[J][a] + tau_K * mass_factor * N[J] * G[I][a]) *
+                      JxW;
                   }
-                else if (i_is_u)
-                  a_ij = -div_u[i] * phi_p[j];
-                else if (j_is_u)
-                  a_ij = -phi_p[i] * div_u[j] -
-                         tau_K * rho / tau * phi_u[j] * grad_p[i];
-                else
-                  {
-                    a_ij = -tau_K * grad_p[j] * grad_p[i];
-                    schur(i, j) += schur_weight *
-                                   (grad_p[i] * grad_p[j] +
-                                    regularization * phi_p[i] * phi_p[j]) *
-                                   JxW;
-                  }
-                matrix(i, j) += a_ij * JxW;
+                // p-p: the PSPG Laplacian; the Schur preconditioner's.
+                const unsigned int i = dof_of[dim][I];
+                const unsigned int j = dof_of[dim][J];
+                matrix(i, j) -= tau_K * GG * JxW;
+                schur(i, j) += schur_weight * (GG + regularization * NN) * JxW;
               }
-            rhs(i) +=
-              (forcing * phi_u[i] - tau_K * stabilized_forcing * grad_p[i]) *
-              JxW;
-            if (with_stress && i_is_u)
-              rhs(i) -= explicit_stress * eps_u[i] * JxW;
+            for (unsigned int a = 0; a < dim; ++a)
+              {
+                rhs(dof_of[a][I]) += forcing[a] * N[I] * JxW;
+                if (with_stress)
+                  rhs(dof_of[a][I]) -= (explicit_stress * G[I])[a] * JxW;
+              }
+            rhs(dof_of[dim][I]) -= tau_K * (stabilized_forcing * G[I]) * JxW;
           }
       }
     // The lumped pressure mass of the liquid part (with the whole cell's,

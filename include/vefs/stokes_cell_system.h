@@ -12,6 +12,8 @@
 #include <vefs/rheology.h>
 #include <vefs/transported_fields.h>
 
+#include <array>
+
 namespace vefs
 {
   /**
@@ -153,13 +155,13 @@ namespace vefs
     std::vector<SymmetricTensor<2, dim>> sigma_star;
     std::vector<Tensor<1, dim>>          div_sigma_star;
     std::vector<Tensor<2, dim>>          grad_u_star;
-    std::vector<Tensor<2, dim>>          stretching;
-    std::vector<Tensor<1, dim>>          phi_u;
-    std::vector<Tensor<2, dim>>          grad_u;
-    std::vector<SymmetricTensor<2, dim>> eps_u;
-    std::vector<double>                  div_u;
-    std::vector<double>                  phi_p;
-    std::vector<Tensor<1, dim>>          grad_p;
+    /** The dof of each component (velocity, then pressure) and vertex. */
+    std::array<std::array<unsigned int, GeometryInfo<dim>::vertices_per_cell>,
+               dim + 1>
+      dof_of;
+    /** sigma* grad N of each vertex at one quadrature point. */
+    std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell>
+      sigma_gradient;
   };
 } // namespace vefs
 
