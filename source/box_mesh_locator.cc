@@ -1,4 +1,8 @@
+#include <deal.II/distributed/p4est_wrappers.h>
+
 #include <vefs/box_mesh_locator.h>
+
+#include <cstring>
 
 namespace vefs
 {
@@ -22,7 +26,10 @@ namespace vefs
     const BoundingBox<dim>          &cavity,
     const std::vector<unsigned int> &subdivisions,
     const std::array<WallType, 6>   &wall_types)
-    : cavity(cavity)
+    : distributed(
+        dynamic_cast<const parallel::distributed::Triangulation<dim> *>(
+          &triangulation))
+    , cavity(cavity)
   {
     for (unsigned int d = 0; d < dim; ++d)
       periodic[d] = wall_types[2 * d] == WallType::periodic;
@@ -47,18 +54,28 @@ namespace vefs
   }
 
   template <int dim>
+  std::pair<unsigned int, Point<dim>>
+  BoxMeshLocator<dim>::coarse_cell_around(const Point<dim> &p) const
+  {
+    std::array<unsigned int, dim> i;
+    Point<dim>                    in_cell;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double x =
+          std::max((p[d] - cavity.lower_bound(d)) / cavity.side_length(d), 0.) *
+          n_coarse[d];
+        i[d] =
+          std::min<unsigned int>(static_cast<unsigned int>(x), n_coarse[d] - 1);
+        in_cell[d] = std::min(std::max(x - i[d], 0.), 1.);
+      }
+    return {coarse_index<dim>(n_coarse, i), in_cell};
+  }
+
+  template <int dim>
   typename Triangulation<dim>::active_cell_iterator
   BoxMeshLocator<dim>::locate(const Point<dim> &p) const
   {
-    std::array<unsigned int, dim> i;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        const double x = (p[d] - cavity.lower_bound(d)) / cavity.side_length(d);
-        i[d]           = std::min<unsigned int>(static_cast<unsigned int>(
-                                        std::max(x, 0.) * n_coarse[d]),
-                                      n_coarse[d] - 1);
-      }
-    auto cell = coarse_cells[coarse_index<dim>(n_coarse, i)];
+    auto cell = coarse_cells[coarse_cell_around(p).first];
     // Children of a hypercube are numbered lexicographically, x fastest.
     while (cell->has_children())
       {
@@ -70,6 +87,42 @@ namespace vefs
         cell = cell->child(child);
       }
     return cell;
+  }
+
+  template <int dim>
+  types::subdomain_id
+  BoxMeshLocator<dim>::owner_rank(const Point<dim> &p) const
+  {
+    if (distributed == nullptr)
+      return 0;
+    using p4est                  = internal::p4est::functions<dim>;
+    const auto [coarse, in_cell] = coarse_cell_around(p);
+    const auto tree = distributed->get_coarse_cell_to_p4est_tree_permutation()
+                        [coarse_cells[coarse]->index()];
+    // A quadrant of the finest level p4est allows: coordinates multiples of
+    // its length, in [0, root length). The tree's axes are the coarse
+    // cell's (deal.II hands p4est the vertices in its own order).
+    constexpr int finest = dim == 2 ? P4EST_QMAXLEVEL : P8EST_QMAXLEVEL;
+    constexpr std::int64_t length =
+      dim == 2 ? P4EST_QUADRANT_LEN(finest) : P8EST_QUADRANT_LEN(finest);
+    constexpr std::int64_t        n_positions = std::int64_t(1) << finest;
+    std::array<std::int32_t, dim> coordinates;
+    for (unsigned int d = 0; d < dim; ++d)
+      coordinates[d] = static_cast<std::int32_t>(
+        length * std::min<std::int64_t>(static_cast<std::int64_t>(in_cell[d] *
+                                                                  n_positions),
+                                        n_positions - 1));
+    typename internal::p4est::types<dim>::quadrant quadrant;
+    std::memset(&quadrant, 0, sizeof(quadrant));
+    quadrant.level = finest;
+    quadrant.x     = coordinates[0];
+    quadrant.y     = coordinates[1];
+    if constexpr (dim == 3)
+      quadrant.z = coordinates[dim - 1];
+    // p4est declares the forest non-const; this only reads its partition.
+    auto *forest = const_cast<typename internal::p4est::types<dim>::forest *>(
+      distributed->get_p4est());
+    return p4est::comm_find_owner(forest, tree, &quadrant, 0);
   }
 
   template <int dim>

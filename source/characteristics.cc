@@ -134,59 +134,11 @@ namespace vefs
     }
 
     /**
-     * The rank that owns the cell around each of @p points, from p4est's
-     * partition (no messages but a collective check of the manifolds).
-     * deal.II 9.4 finds no owner for some points on the faces between coarse
-     * cells (about 3 % of the feet of the 3D ball with 20 mm coarse cells);
-     * they are looked up again moved by a hair, 1e-10 and then 1e-7 coarse
-     * cells, which lands in a cell they touch (or one next to it, a ghost on
-     * its owner). Collective: throws on all ranks if a point still has none.
-     */
-    template <int dim>
-    std::vector<types::subdomain_id>
-    owner_ranks(parallel::distributed::Triangulation<dim> &triangulation,
-                const BoxMeshLocator<dim>                 &locator,
-                const std::vector<Point<dim>>             &points)
-    {
-      auto         owners      = triangulation.find_point_owner_rank(points);
-      const double coarse_size = triangulation.begin(0)->diameter();
-      for (const double hair : {1e-10, -1e-10, 1e-7, -1e-7})
-        {
-          std::vector<unsigned int> missing;
-          std::vector<Point<dim>>   moved;
-          for (unsigned int i = 0; i < points.size(); ++i)
-            if (owners[i] == numbers::invalid_subdomain_id)
-              {
-                Point<dim> p = points[i];
-                for (unsigned int d = 0; d < dim; ++d)
-                  p[d] += hair * coarse_size;
-                missing.push_back(i);
-                moved.push_back(locator.fold_into_cavity(p));
-              }
-          // find_point_owner_rank() asks all ranks for their manifolds.
-          if (!Utilities::MPI::logical_or(!missing.empty(),
-                                          triangulation.get_communicator()))
-            break;
-          const auto found = triangulation.find_point_owner_rank(moved);
-          for (unsigned int k = 0; k < missing.size(); ++k)
-            owners[missing[k]] = found[k];
-        }
-      const bool all_found =
-        std::find(owners.begin(),
-                  owners.end(),
-                  numbers::invalid_subdomain_id) == owners.end();
-      AssertThrow(!Utilities::MPI::logical_or(!all_found,
-                                              triangulation.get_communicator()),
-                  ExcMessage("A characteristic foot lies outside the mesh."));
-      return owners;
-    }
-
-    /**
      * The fields at @p points, which lie in cells artificial on this rank:
-     * p4est names the rank that owns each point, and that rank locates and
-     * evaluates it. Collective. (deal.II 9.4's RemotePointEvaluation
-     * searched all active cells for every point: 77 % of a step of the 3D
-     * ball at 2.5 mm on two ranks.)
+     * the locator names the rank that owns each point (from p4est's
+     * partition), and that rank locates and evaluates it. Collective.
+     * (deal.II 9.4's RemotePointEvaluation searched all active cells for
+     * every point: 77 % of a step of the 3D ball at 2.5 mm on two ranks.)
      */
     template <int dim>
     std::vector<FieldValues<dim>>
@@ -195,14 +147,11 @@ namespace vefs
                       const BoxMeshLocator<dim>     &locator,
                       const Interpolation<dim>      &how)
     {
-      // deal.II 9.4 declares find_point_owner_rank() non-const; it only
-      // reads the forest.
-      auto &triangulation =
-        const_cast<parallel::distributed::Triangulation<dim> &>(
-          dynamic_cast<const parallel::distributed::Triangulation<dim> &>(
-            fields.dof_handler.get_triangulation()));
-      const MPI_Comm comm   = triangulation.get_communicator();
-      const auto     owners = owner_ranks(triangulation, locator, points);
+      const MPI_Comm comm =
+        fields.dof_handler.get_triangulation().get_communicator();
+      std::vector<types::subdomain_id> owners(points.size());
+      for (unsigned int i = 0; i < points.size(); ++i)
+        owners[i] = locator.owner_rank(points[i]);
 
       // Coordinates to the owners, flat.
       std::map<unsigned int, std::vector<double>>       asked;
@@ -257,8 +206,8 @@ namespace vefs
 
     /**
      * The fields at arbitrary points: in the local part of the mesh (owned
-     * and ghost cells) in the cell the locator finds, elsewhere through
-     * RemotePointEvaluation on the ranks that own them.
+     * and ghost cells) in the cell the locator finds, elsewhere on the ranks
+     * that own them (evaluate_remotely()).
      */
     template <int dim>
     std::vector<FieldValues<dim>>

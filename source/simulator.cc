@@ -44,12 +44,8 @@ namespace vefs
             pcout,
             parameters.verbose ? TimerOutput::summary : TimerOutput::never,
             TimerOutput::wall_times)
-    // p4est knows the vertices, so it can name the rank that owns any point
-    // (characteristic feet on other ranks).
     , triangulation(comm,
-                    Triangulation<dim>::limit_level_difference_at_vertices,
-                    parallel::distributed::Triangulation<
-                      dim>::communicate_vertices_to_p4est)
+                    Triangulation<dim>::limit_level_difference_at_vertices)
     , cavity(std::make_pair(to_point<dim>(parameters.cavity_lower),
                             to_point<dim>(parameters.cavity_upper)))
     , levels(parameters)

@@ -2,6 +2,7 @@
 #define vefs_box_mesh_locator_h
 
 #include <deal.II/base/bounding_box.h>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/grid/tria.h>
 
 #include <vefs/parameters.h>
@@ -48,6 +49,18 @@ namespace vefs
     typename Triangulation<dim>::active_cell_iterator
     locate(const Point<dim> &p) const;
 
+    /**
+     * The MPI rank that owns the active cell containing @p p (the cavity's
+     * point fold_into_cavity() gives), from p4est's partition: the position
+     * of p in its coarse cell as a quadrant of p4est's finest level, looked
+     * up among the ranks' first quadrants. No messages, O(log ranks).
+     * (deal.II 9.4's find_point_owner_rank() searches every tree for every
+     * point: with the 6,000 coarse cells of the 3D ball, 11 % of its run at
+     * 2.5 mm.) 0 if the triangulation is not distributed.
+     */
+    types::subdomain_id
+    owner_rank(const Point<dim> &p) const;
+
     /** Coordinates of @p p in the unit cell of the axis-aligned @p cell. */
     static Point<dim>
     unit_point(const typename Triangulation<dim>::active_cell_iterator &cell,
@@ -67,6 +80,15 @@ namespace vefs
     }
 
   private:
+    /**
+     * The coarse cell around @p p (index into coarse_cells), and p's
+     * coordinates in it, each in [0, 1].
+     */
+    std::pair<unsigned int, Point<dim>>
+    coarse_cell_around(const Point<dim> &p) const;
+
+    /** Null if the triangulation is not a parallel::distributed one. */
+    const parallel::distributed::Triangulation<dim>        *distributed;
     const BoundingBox<dim>                                  cavity;
     std::array<unsigned int, dim>                           n_coarse;
     std::array<bool, dim>                                   periodic;
