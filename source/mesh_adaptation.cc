@@ -1,9 +1,11 @@
 #include <deal.II/base/utilities.h>
-#include <deal.II/distributed/solution_transfer.h>
 
 #include <vefs/box_q1_values.h>
 #include <vefs/field_hermite.h>
 #include <vefs/mesh_adaptation.h>
+#include <vefs/vertex_field_transfer.h>
+
+#include <numeric>
 
 namespace vefs
 {
@@ -106,7 +108,7 @@ namespace vefs
 
     /**
      * The cubic level set at the new vertices of refined cells.
-     * SolutionTransfer interpolates the Q1 field there, and where psi is
+     * VertexFieldTransfer interpolates the Q1 field there, and where psi is
      * convex (across a thin filament, between two surfaces) that raises it:
      * the liquid shrinks by O(h^2) at each refinement (vortex, h = 1/128,
      * CFL 1, no volume correction: 8.9 % of the liquid lost with the Q1
@@ -277,14 +279,19 @@ namespace vefs
                                         triangulation.get_communicator()))
           break;
 
-        parallel::distributed::
-          SolutionTransfer<dim, typename TransportedFields<dim>::VectorType>
-            transfer(fields.dof_handler);
-        std::vector<const typename TransportedFields<dim>::VectorType *>
-          old_vectors = {&fields.fields, &fields.level_set_gradient};
+        // The level set gradient has dim used slots, the predicted surface
+        // one.
+        using Transfer = VertexFieldTransfer<dim>;
+        std::vector<unsigned int> all_fields(fields.n_components);
+        std::iota(all_fields.begin(), all_fields.end(), 0);
+        std::vector<unsigned int> gradient(dim);
+        std::iota(gradient.begin(), gradient.end(), 0);
+        std::vector<typename Transfer::Slot> slots = {
+          {&fields.fields, all_fields},
+          {&fields.level_set_gradient, gradient}};
         if (surface_ahead)
-          old_vectors.push_back(surface_ahead);
-        transfer.prepare_for_coarsening_and_refinement(old_vectors);
+          slots.push_back({surface_ahead, {c}});
+        Transfer transfer(triangulation, fields, slots);
         std::unique_ptr<HermiteRefinement<dim>> hermite_refinement;
         if (interpolation != LevelSetInterpolation::linear)
           hermite_refinement =
@@ -295,15 +302,14 @@ namespace vefs
 
         fields.setup_dofs();
         std::vector<typename TransportedFields<dim>::VectorType> transferred(
-          old_vectors.size());
+          slots.size());
         std::vector<typename TransportedFields<dim>::VectorType *> new_vectors;
         for (auto &vector : transferred)
           {
             fields.initialize_vector(vector);
-            vector.zero_out_ghost_values();
             new_vectors.push_back(&vector);
           }
-        transfer.interpolate(new_vectors);
+        transfer.unpack(fields, new_vectors);
         fields.fields             = transferred[0];
         fields.level_set_gradient = transferred[1];
         if (surface_ahead)
