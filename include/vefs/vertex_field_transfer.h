@@ -41,6 +41,11 @@ namespace vefs
                         const TransportedFields<dim>              &fields,
                         const std::vector<Slot>                   &slots);
 
+    /** The mesh's pack callback refers to this object: it must not move. */
+    VertexFieldTransfer(const VertexFieldTransfer &) = delete;
+    VertexFieldTransfer &
+    operator=(const VertexFieldTransfer &) = delete;
+
     /**
      * Write the carried values into @p vectors, one per slot in the same
      * order, set up with the layout of the new mesh and zero elsewhere
