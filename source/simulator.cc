@@ -602,6 +602,10 @@ namespace vefs
       TimerOutput::Scope scope(timer, "3 diffusion: assembly");
       flow.assemble(fields, tau);
     }
+    {
+      TimerOutput::Scope scope(timer, "3 diffusion: preconditioner");
+      flow.build_preconditioner();
+    }
     // Contact walls: solve again while the contact set changes (design
     // section 4); a few times at the most.
     for (unsigned int contact_iteration = 0;; ++contact_iteration)

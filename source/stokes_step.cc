@@ -489,15 +489,24 @@ namespace vefs
   }
 
   template <int dim>
+  void
+  StokesStep<dim>::build_preconditioner()
+  {
+    Assert(step_systems,
+           ExcMessage("build_preconditioner() after assemble()."));
+    if (!step_systems->velocity_amg)
+      build_preconditioners(*step_systems);
+  }
+
+  template <int dim>
   unsigned int
   StokesStep<dim>::solve()
   {
     Assert(step_systems, ExcMessage("solve() after assemble()."));
-    StepSystems &systems = *step_systems;
-    // Later solves of the step are contact iterations.
-    const bool contact_iteration = systems.velocity_amg != nullptr;
-    if (!contact_iteration)
-      build_preconditioners(systems);
+    StepSystems &systems           = *step_systems;
+    const bool   contact_iteration = systems.n_solves > 0;
+    ++systems.n_solves;
+    build_preconditioner();
 
     TrilinosWrappers::MPI::Vector scaled_inverse_mass(
       lumped_pressure_mass.block(1));

@@ -56,6 +56,14 @@ namespace vefs
     void
     assemble(const TransportedFields<dim> &fields, const double tau);
 
+    /**
+     * Build the AMG hierarchies of the step's solves from the assembled
+     * matrices (solve() builds them if this was not called: it is separate
+     * so that the timer shows its cost apart from the Krylov iterations).
+     */
+    void
+    build_preconditioner();
+
     /** Returns the number of Krylov iterations; throws SolverError. */
     unsigned int
     solve();
@@ -199,6 +207,8 @@ namespace vefs
       double                                             tau;
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> velocity_amg;
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> laplace_amg;
+      /** Solves so far: the later ones are contact iterations. */
+      unsigned int n_solves = 0;
     };
 
     /** Those of the step, made by its first assembly after setup(). */
