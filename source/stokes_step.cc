@@ -430,7 +430,7 @@ namespace vefs
 
   template <int dim>
   void
-  StokesStep<dim>::build_preconditioners(StepSystems &systems) const
+  StokesStep<dim>::make_amg_hierarchies(StepSystems &systems) const
   {
     // AMG for the velocity block, told about the constant modes (one per
     // velocity component) so that aggregation treats them as near-kernel.
@@ -495,7 +495,7 @@ namespace vefs
     Assert(step_systems,
            ExcMessage("build_preconditioner() after assemble()."));
     if (!step_systems->velocity_amg)
-      build_preconditioners(*step_systems);
+      make_amg_hierarchies(*step_systems);
   }
 
   template <int dim>

@@ -219,7 +219,7 @@ namespace vefs
 
     /** Build the AMG hierarchies of @p systems from the current matrices. */
     void
-    build_preconditioners(StepSystems &systems) const;
+    make_amg_hierarchies(StepSystems &systems) const;
   };
 } // namespace vefs
 
