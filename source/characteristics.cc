@@ -1,5 +1,4 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/distributed/tria.h>
 
 #include <vefs/characteristics.h>
 #include <vefs/field_hermite.h>

@@ -194,7 +194,7 @@ namespace vefs
                      const types::global_dof_index                dof,
                      const double                                 value)
       {
-        if (vector.locally_owned_elements().is_element(dof))
+        if (vector.in_local_range(dof))
           vector(dof) = value;
       }
 

@@ -1,6 +1,7 @@
 #include <vefs/box_mesh_locator.h>
 #include <vefs/vertex_field_transfer.h>
 
+#include <algorithm>
 #include <cstring>
 
 namespace vefs
@@ -15,41 +16,57 @@ namespace vefs
   {
     for (const Slot &slot : slots)
       n_values += slot.components.size();
+    // Child c's vertex v sits at (bits of c + bits of v) / 2 in the parent's
+    // unit cell: the Q1 weights of the parent's vertices there.
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    child_weights.resize(n_vertices * n_vertices * n_vertices);
+    for (unsigned int c = 0; c < n_vertices; ++c)
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        {
+          Point<dim> xi;
+          for (unsigned int d = 0; d < dim; ++d)
+            xi[d] = 0.5 * (((c >> d) & 1) + ((v >> d) & 1));
+          for (unsigned int w = 0; w < n_vertices; ++w)
+            child_weights[(c * n_vertices + v) * n_vertices + w] =
+              BoxMeshLocator<dim>::vertex_weight(xi, w);
+        }
     // Every cell packs the same number of bytes: deal.II's fixed-size
     // transfer, cheaper than the variable one.
     handle = mesh.register_data_attach(
       [this, &fields](const typename Triangulation<dim>::cell_iterator &cell,
                       const typename Triangulation<dim>::CellStatus status) {
-        const std::vector<double> values =
-          vertex_values(fields,
-                        cell,
-                        status == Triangulation<dim>::CELL_COARSEN);
-        std::vector<char> buffer(values.size() * sizeof(double));
-        std::memcpy(buffer.data(), values.data(), buffer.size());
-        return buffer;
+        return vertex_values(fields,
+                             cell,
+                             status == Triangulation<dim>::CELL_COARSEN);
       },
       false);
   }
 
   template <int dim>
-  std::vector<double>
+  std::vector<char>
   VertexFieldTransfer<dim>::vertex_values(
     const TransportedFields<dim>                     &fields,
     const typename Triangulation<dim>::cell_iterator &cell,
     const bool                                        from_children) const
   {
-    std::vector<double> values(GeometryInfo<dim>::vertices_per_cell * n_values);
+    std::vector<char> buffer(GeometryInfo<dim>::vertices_per_cell * n_values *
+                             sizeof(double));
+    char             *next = buffer.data();
     for (const unsigned int v : GeometryInfo<dim>::vertex_indices())
       {
         // Vertex v of a parent is vertex v of its child v.
         const auto dof_cell =
           fields.cell_of(from_children ? cell->child(v) : cell);
-        unsigned int k = v * n_values;
         for (const Slot &slot : slots)
           for (const unsigned int c : slot.components)
-            values[k++] = (*slot.vector)(dof_cell->vertex_dof_index(v, c));
+            {
+              const double value =
+                (*slot.vector)(dof_cell->vertex_dof_index(v, c));
+              std::memcpy(next, &value, sizeof(double));
+              next += sizeof(double);
+            }
       }
-    return values;
+    return buffer;
   }
 
   template <int dim>
@@ -100,27 +117,19 @@ namespace vefs
             write(fields, cell, parent.data(), vectors);
             return;
           }
-        // Child c's vertex v sits at (bits of c + bits of v) / 2 in the
-        // parent's unit cell.
         for (unsigned int c = 0; c < cell->n_children(); ++c)
           {
+            std::fill(child.begin(), child.end(), 0.);
             for (unsigned int v = 0; v < n_vertices; ++v)
-              {
-                Point<dim> xi;
-                for (unsigned int d = 0; d < dim; ++d)
-                  xi[d] = 0.5 * (((c >> d) & 1) + ((v >> d) & 1));
-                for (unsigned int k = 0; k < n_values; ++k)
-                  child[v * n_values + k] = 0;
-                for (unsigned int w = 0; w < n_vertices; ++w)
-                  {
-                    const double weight =
-                      BoxMeshLocator<dim>::vertex_weight(xi, w);
-                    if (weight != 0)
-                      for (unsigned int k = 0; k < n_values; ++k)
-                        child[v * n_values + k] +=
-                          weight * parent[w * n_values + k];
-                  }
-              }
+              for (unsigned int w = 0; w < n_vertices; ++w)
+                {
+                  const double weight =
+                    child_weights[(c * n_vertices + v) * n_vertices + w];
+                  if (weight != 0)
+                    for (unsigned int k = 0; k < n_values; ++k)
+                      child[v * n_values + k] +=
+                        weight * parent[w * n_values + k];
+                }
             write(fields, cell->child(c), child.data(), vectors);
           }
       });

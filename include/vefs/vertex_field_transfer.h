@@ -57,8 +57,11 @@ namespace vefs
            const std::vector<VectorType *> &vectors);
 
   private:
-    /** The carried values at the vertices of @p cell, vertex by vertex. */
-    std::vector<double>
+    /**
+     * The carried values at the vertices of @p cell, vertex by vertex, as
+     * the bytes of the transfer.
+     */
+    std::vector<char>
     vertex_values(const TransportedFields<dim>                     &fields,
                   const typename Triangulation<dim>::cell_iterator &cell,
                   const bool from_children) const;
@@ -73,7 +76,12 @@ namespace vefs
     std::vector<Slot>                          slots;
     /** Carried values per vertex: the components of all slots. */
     unsigned int n_values = 0;
-    unsigned int handle;
+    /**
+     * Weight of the parent's vertex w at vertex v of child c, at
+     * (c * vertices + v) * vertices + w.
+     */
+    std::vector<double> child_weights;
+    unsigned int        handle;
   };
 } // namespace vefs
 
