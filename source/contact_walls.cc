@@ -59,8 +59,8 @@ namespace vefs
   template <int dim>
   bool
   ContactWalls<dim>::is_on_contact_wall(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    const unsigned int                                    face) const
+    const typename Triangulation<dim>::cell_iterator &cell,
+    const unsigned int                                face) const
   {
     return cell->at_boundary(face) &&
            std::find(walls.begin(),
@@ -70,14 +70,17 @@ namespace vefs
 
   template <int dim>
   void
-  ContactWalls<dim>::reset(const DoFHandler<dim> &dof_handler,
-                           const IndexSet        &owned,
-                           const IndexSet        &relevant,
-                           const unsigned int     liquid_index)
+  ContactWalls<dim>::reset(const DoFHandler<dim>           &dof_handler,
+                           const IndexSet                  &owned,
+                           const IndexSet                  &relevant,
+                           const IndexSet                  &touched,
+                           const unsigned int               liquid_index,
+                           const AffineConstraints<double> &interpolation)
   {
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     wall_unknowns.clear();
     in_contact.reinit(owned, relevant, comm);
+    this->touched = touched;
     if (walls.empty())
       return;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -93,8 +96,9 @@ namespace vefs
                 {
                   const types::global_dof_index dof =
                     cell->face(f)->vertex_dof_index(v, wall / 2, liquid_index);
-                  wall_unknowns[dof] = {wall % 2 == 0 ? -1 : 1,
-                                        cell->face(f)->vertex(v)};
+                  if (!interpolation.is_constrained(dof))
+                    wall_unknowns[dof] = {wall % 2 == 0 ? -1 : 1,
+                                          cell->face(f)->vertex(v)};
                 }
             }
 
@@ -186,28 +190,45 @@ namespace vefs
 
   template <int dim>
   bool
-  ContactWalls<dim>::update(const DoFHandler<dim>   &dof_handler,
-                            const LiquidDomain<dim> &domain,
-                            const BlockVector       &solution,
-                            StokesCellSystem<dim>   &local,
-                            GhostPenalty<dim>       &ghost_penalty,
-                            const unsigned int       liquid_index)
+  ContactWalls<dim>::update(const DoFHandler<dim>           &dof_handler,
+                            const LiquidDomain<dim>         &domain,
+                            const BlockVector               &solution,
+                            StokesCellSystem<dim>           &local,
+                            GhostPenalty<dim>               &ghost_penalty,
+                            const FlowElements<dim>         &elements,
+                            const AffineConstraints<double> &interpolation)
   {
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     // The reaction of a constrained degree of freedom is its residual in
     // the equations without the constraint: int (S n) . phi_i over the
     // wall, the force the wall puts on the liquid there.
-    Vector reaction;
-    reaction.reinit(in_contact);
+    // Summed on the unknowns' owners: a cell's or face's unknowns may be
+    // interpolated from ones that only the owner knows to be at a wall.
+    Vector reaction(in_contact.locally_owned_elements(), touched, comm);
+    const types::global_dof_index n_velocities = in_contact.size();
+    // A residual in the flow space's own unknowns.
+    const auto add_reaction = [&](const types::global_dof_index dof,
+                                  const double                  residual) {
+      if (dof >= n_velocities)
+        return;
+      if (const auto *entries = interpolation.get_constraint_entries(dof))
+        {
+          for (const auto &[from, weight] : *entries)
+            reaction(from) += weight * residual;
+        }
+      else
+        reaction(dof) += residual;
+    };
     std::vector<types::global_dof_index> dofs;
     dealii::Vector<double>               values, residual;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index &&
-          cell->at_boundary())
+      if (cell->is_locally_owned() && domain.has_liquid(cell) &&
+          elements.element(cell)->at_boundary())
         {
-          bool on_contact_wall = false;
-          for (const unsigned int f : cell->face_indices())
-            if (is_on_contact_wall(cell, f))
+          const auto element         = elements.element(cell);
+          bool       on_contact_wall = false;
+          for (const unsigned int f : element->face_indices())
+            if (is_on_contact_wall(element, f))
               on_contact_wall = true;
           if (!on_contact_wall)
             continue;
@@ -221,21 +242,22 @@ namespace vefs
           local.matrix.vmult(residual, values);
           residual -= local.rhs;
           for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (wall_unknowns.count(dofs[i]) > 0)
-              reaction(dofs[i]) += residual(i);
+            add_reaction(dofs[i], residual(i));
         }
     // Only faces next to a wall can hold wall unknowns.
     ghost_penalty.for_each_face(
       dof_handler,
-      domain,
       true,
       [&](const FullMatrix<double> &matrix,
           const FullMatrix<double> &,
           const std::vector<types::global_dof_index> &face_dofs) {
         for (unsigned int i = 0; i < face_dofs.size(); ++i)
-          if (wall_unknowns.count(face_dofs[i]) > 0)
+          {
+            double row = 0;
             for (unsigned int j = 0; j < face_dofs.size(); ++j)
-              reaction(face_dofs[i]) += matrix(i, j) * solution(face_dofs[j]);
+              row += matrix(i, j) * solution(face_dofs[j]);
+            add_reaction(face_dofs[i], row);
+          }
       },
       GhostPenalty<dim>::Faces::next_to_walls);
     reaction.compress(VectorOperation::add);
@@ -277,13 +299,14 @@ namespace vefs
     contact_measure = 0;
     std::vector<types::global_dof_index> face_dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index &&
-          cell->at_boundary())
+      if (cell->is_locally_owned() && cell->at_boundary() &&
+          domain.has_liquid(cell))
         for (const unsigned int f : cell->face_indices())
           if (is_on_contact_wall(cell, f))
             {
               face_dofs.resize(cell->get_fe().n_dofs_per_face());
-              cell->face(f)->get_dof_indices(face_dofs, liquid_index);
+              cell->face(f)->get_dof_indices(face_dofs,
+                                             cell->active_fe_index());
               bool touching = true;
               for (const auto dof : face_dofs)
                 if (wall_unknowns.count(dof) > 0 && in_contact(dof) != 1)

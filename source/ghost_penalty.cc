@@ -10,11 +10,13 @@ namespace vefs
   GhostPenalty<dim>::GhostPenalty(const Parameters         &parameters,
                                   const Rheology<dim>      &rheology,
                                   const FiniteElement<dim> &flow_fe,
+                                  const FlowElements<dim>  &elements,
                                   const double              tau)
     : parameters(parameters)
     , tau(tau)
     , mu(rheology.effective_viscosity(tau))
     , flow_fe(flow_fe)
+    , elements(elements)
     , interface_values(flow_fe,
                        QGauss<dim - 1>(2),
                        update_gradients | update_normal_vectors |
@@ -24,11 +26,10 @@ namespace vefs
 
   template <int dim>
   void
-  GhostPenalty<dim>::for_each_face(const DoFHandler<dim>   &dof_handler,
-                                   const LiquidDomain<dim> &domain,
-                                   const bool               matrices_wanted,
-                                   const FaceAction        &action,
-                                   const Faces              faces)
+  GhostPenalty<dim>::for_each_face(const DoFHandler<dim> &dof_handler,
+                                   const bool             matrices_wanted,
+                                   const FaceAction      &action,
+                                   const Faces            faces)
   {
     using Location = typename LiquidDomain<dim>::Location;
     if (matrices_wanted && all_faces_kept)
@@ -51,13 +52,17 @@ namespace vefs
                            const auto        &neighbor,
                            const unsigned int neighbor_face,
                            const unsigned int neighbor_subface) {
-      if (!domain.has_liquid(neighbor) ||
-          (faces == Faces::next_to_walls && !cell->at_boundary() &&
-           !neighbor->at_boundary()))
+      // Within one flow element (FlowElements) the normal derivatives do
+      // not jump.
+      const bool next_to_walls = elements.element(cell)->at_boundary() ||
+                                 elements.element(neighbor)->at_boundary();
+      if (!elements.has_liquid(neighbor) ||
+          elements.same_element(cell, neighbor) ||
+          (faces == Faces::next_to_walls && !next_to_walls))
         return;
       // A face between two cut cells is seen from both: it belongs to the
       // side with the smaller CellId, on whichever rank owns that side.
-      const bool neighbor_is_cut = domain.location(neighbor) == Location::cut;
+      const bool neighbor_is_cut = elements.location(neighbor) == Location::cut;
       if (neighbor_is_cut && neighbor->id() < cell->id())
         return;
       if (!matrices_wanted)
@@ -90,20 +95,18 @@ namespace vefs
       schur.reinit(n, n);
       // Between two cut cells each side weighs in with half the penalty
       // and its own h.
-      const Weights weights =
-        neighbor_is_cut
-                                    ? face_weights(cell->minimum_vertex_distance(), 0.5) +
-              face_weights(neighbor->minimum_vertex_distance(), 0.5)
-                                    : face_weights(cell->minimum_vertex_distance(), 1.);
+      const Weights weights = neighbor_is_cut
+                                                          ? face_weights(elements.size(cell), 0.5) +
+                                    face_weights(elements.size(neighbor), 0.5)
+                                                          : face_weights(elements.size(cell), 1.);
       compute(weights);
       if (keep)
-        keep_face(interface_values.get_interface_dof_indices(),
-                  cell->at_boundary() || neighbor->at_boundary());
+        keep_face(interface_values.get_interface_dof_indices(), next_to_walls);
       action(matrix, schur, interface_values.get_interface_dof_indices());
     };
 
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && domain.location(cell) == Location::cut)
+      if (cell->is_locally_owned() && elements.location(cell) == Location::cut)
         for (const unsigned int f : cell->face_indices())
           {
             if (cell->at_boundary(f))

@@ -393,6 +393,18 @@ namespace vefs
         "CFL number, so large steps no longer fill the mesh with fine cells, "
         "at the cost of one more trace and a few more adaptation cycles per "
         "step. Needs 'Remap distance = 0'.");
+      prm.declare_entry(
+        "Flow cells",
+        "finest",
+        Patterns::Selection("finest|parents"),
+        "The cells of the flow's velocity and pressure. finest: every cell. "
+        "parents: where the mesh is at 'Maximum level', the flow's unknowns "
+        "are Q1 on the parents of the finest cells, one level coarser than "
+        "the transport (as the seed's 5 mm flow cells over 1 mm transport "
+        "cells), while the liquid domain is still cut out of the finest "
+        "cells. About 2^dim times fewer flow unknowns in the band around the "
+        "surface. Needs 'Bulk level' = 'Maximum level' - 1; not with "
+        "periodic walls.");
       prm.declare_entry("Extension layers",
                         "4",
                         Patterns::Integer(1, 100),
@@ -746,6 +758,7 @@ namespace vefs
     band_width       = prm.get_double("Band width");
     band_predicted   = prm.get("Band placement") == "predicted";
     extension_layers = prm.get_integer("Extension layers");
+    flow_on_parents  = prm.get("Flow cells") == "parents";
     extend_outside_velocity =
       prm.get("Outside velocity of cut cells") == "extension";
     extend_outside_stress =
@@ -974,6 +987,15 @@ namespace vefs
             "'predicted' adapts the mesh before every advection; between "
             "remaps the mesh stays: it needs 'Mesh refinement/Remap "
             "distance = 0'");
+    require(!flow_on_parents || periodic_directions().empty(),
+            "Mesh refinement/Flow cells",
+            "'parents' is not implemented with periodic walls: use "
+            "'finest'");
+    require(!flow_on_parents || (max_level > 0 && bulk_level + 1 >= max_level),
+            "Mesh refinement/Flow cells",
+            "'parents' needs 'Bulk level' = 'Maximum level' - 1 (or equal to "
+            "it, and at least 1): the flow's cells then all lie on one "
+            "level");
     require(min_level <= bulk_level && bulk_level <= max_level,
             "Mesh refinement/Bulk level",
             "levels must satisfy Minimum level <= Bulk level <= Maximum "

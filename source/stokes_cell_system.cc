@@ -8,11 +8,13 @@ namespace vefs
                                           const FiniteElement<dim> &flow_fe,
                                           const TransportedFields<dim> &fields,
                                           const LiquidDomain<dim>      &domain,
-                                          const double                  tau)
+                                          const FlowElements<dim> &elements,
+                                          const double             tau)
     : parameters(parameters)
     , rheology(rheology)
     , fields(fields)
     , domain(domain)
+    , elements(elements)
     , flow_fe(flow_fe)
     , tau(tau)
     , mu(rheology.effective_viscosity(tau))
@@ -66,7 +68,8 @@ namespace vefs
     else
       {
         compute_anew(cell);
-        if (cell->at_boundary())
+        // The contact walls need the cells of elements at the walls.
+        if (elements.element(cell)->at_boundary())
           keep(cell);
       }
   }
@@ -116,7 +119,7 @@ namespace vefs
     const BoxCellValues<dim> &values = liquid_values.reinit(cell);
     evaluate_advected_fields(values, fields.cell_of(cell));
 
-    const double h = cell->minimum_vertex_distance();
+    const double h = elements.size(cell);
     const double tau_K =
       parameters.pressure_stabilization / (rho / tau + 4 * mu / (h * h));
     schur_weight = tau / rho + tau_K;

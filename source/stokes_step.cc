@@ -108,6 +108,7 @@ namespace vefs
     , dof_handler(triangulation)
     , rheology(parameters)
     , contact(parameters)
+    , elements(parameters)
   {
     fe_collection.push_back(FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1));
     fe_collection.push_back(
@@ -124,10 +125,11 @@ namespace vefs
     time         = new_time;
     this->domain = &domain;
     step_systems.reset();
+    elements.classify(dof_handler, domain);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        cell->set_active_fe_index(domain.has_liquid(cell) ? liquid_index
-                                                          : empty_index);
+        cell->set_active_fe_index(elements.has_liquid(cell) ? liquid_index
+                                                            : empty_index);
     dof_handler.distribute_dofs(fe_collection);
 
     std::vector<unsigned int> block_component(dim + 1, 0);
@@ -144,12 +146,29 @@ namespace vefs
                              owned.get_view(n_u, n_u + n_p)};
     relevant_partitioning = {relevant_dofs.get_view(0, n_u),
                              relevant_dofs.get_view(n_u, n_u + n_p)};
+    elements.exchange_parent_dofs(dof_handler, liquid_index);
+    touched_dofs = relevant_dofs;
+    touched_dofs.add_indices(elements.far_parent_dofs());
+    touched_partitioning = {touched_dofs.get_view(0, n_u),
+                            touched_dofs.get_view(n_u, n_u + n_p)};
     check_periodic_liquid();
+    interpolation.clear();
+    interpolation.reinit(touched_dofs);
+    elements.make_interpolation_constraints(dof_handler,
+                                            liquid_index,
+                                            interpolation);
+    n_interpolated = 0;
+    for (const auto &line : interpolation.get_lines())
+      if (owned.is_element(line.index))
+        ++n_interpolated;
+    n_interpolated = Utilities::MPI::sum(n_interpolated, comm);
     // The velocity block comes first: its indices are the global ones.
     contact.reset(dof_handler,
                   owned_partitioning[0],
                   relevant_partitioning[0],
-                  liquid_index);
+                  touched_partitioning[0],
+                  liquid_index,
+                  interpolation);
     make_constraints(constraints, true);
     if (!contact.empty())
       make_constraints(constraints_without_contact, false);
@@ -201,8 +220,10 @@ namespace vefs
   StokesStep<dim>::make_constraints(AffineConstraints<double> &constraints,
                                     const bool with_contact) const
   {
+    // The flow's space first: the interpolation in the cells on their
+    // parent, then what constrains the space's own unknowns.
     constraints.clear();
-    constraints.reinit(relevant_dofs);
+    constraints.copy_from(interpolation);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     for (const unsigned int d : parameters.periodic_directions())
       DoFTools::make_periodicity_constraints(dof_handler,
@@ -211,6 +232,7 @@ namespace vefs
                                              d,
                                              constraints);
     make_wall_constraints(constraints);
+    make_far_parent_wall_constraints(constraints);
     if (with_contact)
       contact.add_constraints(constraints);
     // A periodic pair may be split between ranks, and the walls it meets
@@ -237,7 +259,7 @@ namespace vefs
     // Built in deal.II's pattern and handed to Epetra once: inserting the
     // entries of each cell and face into Epetra's graph one by one took most
     // of the setup of the 3D ball.
-    BlockDynamicSparsityPattern pattern(relevant_partitioning);
+    BlockDynamicSparsityPattern pattern(touched_partitioning);
     DoFTools::make_sparsity_pattern(dof_handler,
                                     coupling,
                                     pattern,
@@ -248,10 +270,10 @@ namespace vefs
     GhostPenalty<dim> ghost_penalty(parameters,
                                     rheology,
                                     fe_collection[liquid_index],
+                                    elements,
                                     1.);
     ghost_penalty.for_each_face(
       dof_handler,
-      *domain,
       false,
       [&](const auto &, const auto &, const auto &dofs) {
         pattern_constraints.add_entries_local_to_global(dofs, pattern, false);
@@ -259,17 +281,17 @@ namespace vefs
     SparsityTools::distribute_sparsity_pattern(pattern,
                                                dof_handler.locally_owned_dofs(),
                                                comm,
-                                               relevant_dofs);
+                                               touched_dofs);
     system_matrix.clear();
     system_matrix.reinit(owned_partitioning, pattern, comm);
 
     // The Schur approximation couples the pressures as the pressure block of
     // the system does (cells and ghost penalty alike); the constrained
     // velocities keep the diagonal entry that their rows receive.
-    BlockDynamicSparsityPattern schur_pattern(relevant_partitioning);
+    BlockDynamicSparsityPattern schur_pattern(touched_partitioning);
     for (const auto &entry : pattern.block(1, 1))
       schur_pattern.block(1, 1).add(entry.row(), entry.column());
-    for (const auto i : relevant_partitioning[0])
+    for (const auto i : touched_partitioning[0])
       if (pattern_constraints.is_constrained(i))
         schur_pattern.block(0, 0).add(i, i);
     schur_matrix.clear();
@@ -278,6 +300,54 @@ namespace vefs
     system_rhs.reinit(owned_partitioning, comm);
     lumped_pressure_mass.reinit(owned_partitioning, comm);
     solution.reinit(owned_partitioning, relevant_partitioning, comm);
+  }
+
+  template <int dim>
+  void
+  StokesStep<dim>::make_far_parent_wall_constraints(
+    AffineConstraints<double> &constraints) const
+  {
+    const IndexSet &far = elements.far_parent_dofs();
+    if (far.is_empty())
+      return;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_ghost() && cell->active_fe_index() == liquid_index &&
+          elements.on_parent(cell) && cell->parent()->at_boundary())
+        for (const unsigned int f : cell->parent()->face_indices())
+          if (cell->parent()->at_boundary(f))
+            {
+              const types::boundary_id wall =
+                cell->parent()->face(f)->boundary_id();
+              const WallType type = parameters.wall_type[wall];
+              if (type != WallType::no_slip && type != WallType::slip &&
+                  type != WallType::velocity)
+                continue;
+              if (type == WallType::velocity)
+                wall_velocity[wall]->set_time(time);
+              for (unsigned int i = 0; i < GeometryInfo<dim>::vertices_per_face;
+                   ++i)
+                {
+                  const unsigned int v =
+                    GeometryInfo<dim>::face_to_cell_vertices(f, i);
+                  for (unsigned int c = 0; c < dim; ++c)
+                    {
+                      // A slip wall holds the normal component only.
+                      if (type == WallType::slip && c != wall / 2)
+                        continue;
+                      const types::global_dof_index dof =
+                        elements.parent_vertex_dof(cell, v, c);
+                      if (!far.is_element(dof) ||
+                          constraints.is_constrained(dof))
+                        continue;
+                      constraints.add_line(dof);
+                      if (type == WallType::velocity)
+                        constraints.set_inhomogeneity(
+                          dof,
+                          wall_velocity[wall]->value(cell->parent()->vertex(v),
+                                                     c));
+                    }
+                }
+            }
   }
 
   template <int dim>
@@ -349,7 +419,7 @@ namespace vefs
       fe_collection[liquid_index].n_dofs_per_cell());
 
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index)
+      if (cell->is_locally_owned() && domain->has_liquid(cell))
         {
           local.compute(cell);
           cell->get_dof_indices(dof_indices);
@@ -375,7 +445,6 @@ namespace vefs
     FullMatrix<double>                   pressure_schur;
     systems.faces.for_each_face(
       dof_handler,
-      *domain,
       true,
       [&](const auto &matrix, const auto &schur, const auto &dofs) {
         // Through the right-hand side, so that wall velocities act.
@@ -585,7 +654,8 @@ namespace vefs
                         solution,
                         systems.cells,
                         systems.faces,
-                        liquid_index))
+                        elements,
+                        interpolation))
       return false;
     make_constraints(constraints, true);
     contact.impose(system_matrix, system_rhs);
@@ -606,10 +676,12 @@ namespace vefs
                                               fe_collection[liquid_index],
                                               fields,
                                               *domain,
+                                              elements,
                                               tau),
                         GhostPenalty<dim>(parameters,
                                           rheology,
                                           fe_collection[liquid_index],
+                                          elements,
                                           tau),
                         tau,
                         nullptr,
@@ -630,8 +702,8 @@ namespace vefs
     std::vector<Tensor<1, dim>>      u(face_quadrature.size());
     double                           rate = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index &&
-          cell->at_boundary())
+      if (cell->is_locally_owned() && cell->at_boundary() &&
+          domain->has_liquid(cell))
         for (const unsigned int f : cell->face_indices())
           if (cell->at_boundary(f) &&
               (parameters.wall_type[cell->face(f)->boundary_id()] ==

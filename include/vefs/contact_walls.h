@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <vefs/flow_elements.h>
 #include <vefs/ghost_penalty.h>
 #include <vefs/parameters.h>
 #include <vefs/stokes_cell_system.h>
@@ -42,14 +43,19 @@ namespace vefs
 
     /**
      * After the flow unknowns are distributed: find the degrees of freedom
-     * normal to contact walls on liquid cells; all of them start in contact
-     * but those at a node released at the end of the last step.
+     * normal to contact walls on liquid cells, but those that
+     * @p interpolation constrains (FlowElements); all of them start in
+     * contact but those at a node released at the end of the last step.
+     * @p touched: the velocity unknowns this rank's cells and faces write
+     * into (their reactions too).
      */
     void
-    reset(const DoFHandler<dim> &dof_handler,
-          const IndexSet        &owned,
-          const IndexSet        &relevant,
-          const unsigned int     liquid_index);
+    reset(const DoFHandler<dim>           &dof_handler,
+          const IndexSet                  &owned,
+          const IndexSet                  &relevant,
+          const IndexSet                  &touched,
+          const unsigned int               liquid_index,
+          const AffineConstraints<double> &interpolation);
 
     /** u.n = 0 at the degrees of freedom in contact. */
     void
@@ -76,18 +82,21 @@ namespace vefs
 
     /**
      * Reactions from the unconstrained residual of @p solution (cell by
-     * cell with @p local, face by face with @p ghost_penalty), then the
-     * active-set update. Returns true if the set changed anywhere (then
+     * cell with @p local, face by face with @p ghost_penalty; the residual of
+     * an unknown that @p interpolation constrains goes to the unknowns it
+     * is interpolated from, the flow space's own), then the active-set
+     * update. Returns true if the set changed anywhere (then
      * the constraints must be made again and the set imposed). Also
      * measures the contact force and the contact length (area in 3D).
      */
     bool
-    update(const DoFHandler<dim>   &dof_handler,
-           const LiquidDomain<dim> &domain,
-           const BlockVector       &solution,
-           StokesCellSystem<dim>   &local,
-           GhostPenalty<dim>       &ghost_penalty,
-           const unsigned int       liquid_index);
+    update(const DoFHandler<dim>           &dof_handler,
+           const LiquidDomain<dim>         &domain,
+           const BlockVector               &solution,
+           StokesCellSystem<dim>           &local,
+           GhostPenalty<dim>               &ghost_penalty,
+           const FlowElements<dim>         &elements,
+           const AffineConstraints<double> &interpolation);
 
     /** Normal force of the walls on the liquid (N, N/m in 2D), >= 0. */
     double force = 0;
@@ -98,9 +107,8 @@ namespace vefs
     using Vector = LinearAlgebra::distributed::Vector<double>;
 
     bool
-    is_on_contact_wall(
-      const typename DoFHandler<dim>::active_cell_iterator &cell,
-      const unsigned int                                    face) const;
+    is_on_contact_wall(const typename Triangulation<dim>::cell_iterator &cell,
+                       const unsigned int face) const;
 
     /** Boundary ids of the contact walls. */
     std::vector<types::boundary_id> walls;
@@ -131,6 +139,8 @@ namespace vefs
 
     /** 1 for a degree of freedom in contact, 0 otherwise; ghosted. */
     Vector in_contact;
+    /** The velocity unknowns this rank writes reactions into. */
+    IndexSet touched;
     /** Nodes of owned degrees of freedom released by the last update(). */
     std::vector<Point<dim>> released_nodes;
   };

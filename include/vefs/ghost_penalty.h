@@ -5,7 +5,7 @@
 #include <deal.II/fe/fe_interface_values.h>
 #include <deal.II/lac/full_matrix.h>
 
-#include <vefs/liquid_domain.h>
+#include <vefs/flow_elements.h>
 #include <vefs/parameters.h>
 #include <vefs/rheology.h>
 
@@ -41,20 +41,24 @@ namespace vefs
     enum class Faces
     {
       all,
-      /** Faces with a cell at the cavity boundary on either side. */
+      /** Faces with a flow element (FlowElements) at the cavity boundary
+       * on either side. */
       next_to_walls
     };
 
     GhostPenalty(const Parameters         &parameters,
                  const Rheology<dim>      &rheology,
                  const FiniteElement<dim> &flow_fe,
+                 const FlowElements<dim>  &elements,
                  const double              tau);
 
     /**
-     * Call @p action for every face of a locally owned cut cell with liquid
-     * on the other side, once: a face between two cut cells is visited from
-     * the one with the smaller CellId (which may be on another rank) and
-     * carries half the penalty of each side. With @p matrices_wanted false the
+     * Call @p action for every face of a locally owned cell whose flow
+     * element (FlowElements, classified) is cut, with liquid in the element
+     * on the other side, once: a face between two cut elements is visited
+     * from the cell with the smaller CellId (which may be on another rank)
+     * and carries half the penalty of each side; faces within an element
+     * are not visited. With @p matrices_wanted false the
      * matrices are empty and @p action is called once per component with
      * the dofs of that component on both cells, sorted: for the sparsity
      * pattern (the penalty couples each component with itself only).
@@ -66,11 +70,10 @@ namespace vefs
      * tau).
      */
     void
-    for_each_face(const DoFHandler<dim>   &dof_handler,
-                  const LiquidDomain<dim> &domain,
-                  const bool               matrices_wanted,
-                  const FaceAction        &action,
-                  const Faces              faces = Faces::all);
+    for_each_face(const DoFHandler<dim> &dof_handler,
+                  const bool             matrices_wanted,
+                  const FaceAction      &action,
+                  const Faces            faces = Faces::all);
 
   private:
     /** The factors of the velocity, pressure and Schur terms of a face. */
@@ -122,6 +125,7 @@ namespace vefs
     const double              tau;
     const double              mu;
     const FiniteElement<dim> &flow_fe;
+    const FlowElements<dim>  &elements;
     FEInterfaceValues<dim>    interface_values;
     FullMatrix<double>        matrix;
     FullMatrix<double>        schur;

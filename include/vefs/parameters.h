@@ -164,6 +164,9 @@ namespace vefs
      */
     bool         band_predicted;
     unsigned int extension_layers;
+    /** Whether the flow's unknowns on the finest cells are their parents'
+     * ('Mesh refinement/Flow cells = parents'), see FlowElements. */
+    bool flow_on_parents;
     /**
      * Whether the vertices of cut cells outside the liquid take the extended
      * velocity instead of the flow step's ('Outside velocity of cut cells').

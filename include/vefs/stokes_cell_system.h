@@ -7,6 +7,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <vefs/box_q1_values.h>
+#include <vefs/flow_elements.h>
 #include <vefs/liquid_domain.h>
 #include <vefs/parameters.h>
 #include <vefs/rheology.h>
@@ -43,6 +44,7 @@ namespace vefs
                      const FiniteElement<dim>     &flow_fe,
                      const TransportedFields<dim> &fields,
                      const LiquidDomain<dim>      &domain,
+                     const FlowElements<dim>      &elements,
                      const double                  tau);
 
     /**
@@ -126,6 +128,7 @@ namespace vefs
     const Rheology<dim>          &rheology;
     const TransportedFields<dim> &fields;
     const LiquidDomain<dim>      &domain;
+    const FlowElements<dim>      &elements;
     const FiniteElement<dim>     &flow_fe;
     const double                  tau;
     const double                  mu;

@@ -11,6 +11,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <vefs/contact_walls.h>
+#include <vefs/flow_elements.h>
 #include <vefs/ghost_penalty.h>
 #include <vefs/liquid_domain.h>
 #include <vefs/parameters.h>
@@ -36,7 +37,8 @@ namespace vefs
    * on the liquid domain psi < 0, cut out of the cells the free surface
    * crosses (LiquidDomain), so that the surface itself carries the natural
    * zero-traction condition. Elements: Q1-Q1 with consistent pressure
-   * stabilisation (PSPG) on every cell that holds liquid, FE_Nothing
+   * stabilisation (PSPG) on every cell whose flow element (FlowElements)
+   * holds liquid, FE_Nothing
    * elsewhere, and a ghost penalty on the faces of cut cells.
    */
   template <int dim>
@@ -113,10 +115,12 @@ namespace vefs
     double
     outflow_rate() const;
 
+    /** The flow's unknowns: with 'Flow cells = parents' those of the
+     * parents' Q1 space, not the interpolated ones of the finest cells. */
     types::global_dof_index
     n_dofs() const
     {
-      return dof_handler.n_dofs();
+      return dof_handler.n_dofs() - n_interpolated;
     }
 
     const DoFHandler<dim> &
@@ -137,6 +141,14 @@ namespace vefs
 
     void
     make_wall_constraints(AffineConstraints<double> &constraints) const;
+    /**
+     * The same for the unknowns this rank writes into at the vertices of
+     * ghost cells' parents that it does not otherwise see
+     * (FlowElements::far_parent_dofs()).
+     */
+    void
+    make_far_parent_wall_constraints(
+      AffineConstraints<double> &constraints) const;
 
     /**
      * The periodicity constraints of deal.II 9.4 need the same element on
@@ -163,6 +175,13 @@ namespace vefs
     std::vector<IndexSet> owned_partitioning;
     std::vector<IndexSet> relevant_partitioning;
     IndexSet              relevant_dofs;
+    /**
+     * The unknowns whose constraints and matrix rows this rank touches: the
+     * locally relevant ones and, with 'Flow cells = parents', the far
+     * vertices of ghost cells' parents.
+     */
+    IndexSet              touched_dofs;
+    std::vector<IndexSet> touched_partitioning;
     /** All constraints, contact included: those of the solution. */
     AffineConstraints<double> constraints;
     /**
@@ -186,6 +205,11 @@ namespace vefs
     BlockVector                         solution;
     const Rheology<dim>                 rheology;
     ContactWalls<dim>                   contact;
+    FlowElements<dim>                   elements;
+    /** The unknowns of the finest cells interpolated from their parent's
+     * (FlowElements), a part of every other set of constraints. */
+    AffineConstraints<double> interpolation;
+    types::global_dof_index   n_interpolated = 0;
     /** Time of the step being solved (for the wall velocities). */
     double time = 0;
     /** The liquid of the step being solved, from setup(). */

@@ -1,0 +1,160 @@
+#ifndef vefs_flow_elements_h
+#define vefs_flow_elements_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <vefs/liquid_domain.h>
+#include <vefs/parameters.h>
+
+#include <map>
+#include <vector>
+
+namespace vefs
+{
+  /**
+   * The elements of the flow's Q1-Q1 space ('Mesh refinement/Flow cells').
+   * With 'finest' every cell is its own element. With 'parents' the cells
+   * of the finest level ('Maximum level') share their parent's element: the
+   * flow's velocity and pressure are Q1 on the parents there, one level
+   * coarser than the transport, while the liquid domain is still cut out of
+   * the finest cells (the seed solved its flow on 5 mm cells over a 1 mm
+   * transport grid). The finest cells keep their own degrees of freedom;
+   * those at nodes that are not their parent's vertices are constrained to
+   * the parent's Q1 interpolant, so that assembly, contact and output work
+   * on the cells as before.
+   *
+   * p4est keeps the children of a parent whose children are all active on
+   * one rank, so a parent's element lies within one rank's cells. A ghost
+   * cell's siblings, though, may be artificial: the ranks exchange the
+   * parents' vertex unknowns of ghost cells (exchange_parent_dofs()), and
+   * a rank may have to constrain and write into unknowns of such parents
+   * that it does not otherwise see (far_parent_dofs()).
+   */
+  template <int dim>
+  class FlowElements
+  {
+  public:
+    using CellIterator = typename Triangulation<dim>::cell_iterator;
+
+    explicit FlowElements(const Parameters &parameters);
+
+    /** Whether the flow's element of @p cell is its parent. */
+    bool
+    on_parent(const CellIterator &cell) const
+    {
+      return on_parents && cell->level() == static_cast<int>(finest_level) &&
+             cell->level() > 0;
+    }
+
+    /** The cell that is the flow's element of @p cell. */
+    CellIterator
+    element(const CellIterator &cell) const
+    {
+      return on_parent(cell) ? cell->parent() : cell;
+    }
+
+    /** The size h of the flow's element of @p cell (shortest edge). */
+    double
+    size(const CellIterator &cell) const
+    {
+      const double h = cell->minimum_vertex_distance();
+      return on_parent(cell) ? 2 * h : h;
+    }
+
+    /** Whether @p a and @p b lie in the same element. */
+    bool
+    same_element(const CellIterator &a, const CellIterator &b) const
+    {
+      return on_parent(a) && on_parent(b) && a->parent() == b->parent();
+    }
+
+    using Location = typename LiquidDomain<dim>::Location;
+
+    /**
+     * Where the elements of the owned and ghost cells lie with respect to
+     * the liquid of @p domain. An element on a parent is full if all its
+     * children are, empty if all are, cut otherwise.
+     */
+    void
+    classify(const DoFHandler<dim>   &dof_handler,
+             const LiquidDomain<dim> &domain);
+
+    /** Where the element of an owned or ghost @p cell lies (after
+     * classify()). */
+    Location
+    location(
+      const typename Triangulation<dim>::active_cell_iterator &cell) const
+    {
+      return on_parents ? element_locations[cell->active_cell_index()]
+                        : domain->location(cell);
+    }
+
+    /**
+     * Whether the element of an owned or ghost @p cell holds liquid: then
+     * the cell carries flow unknowns (with parents: also a dry child of a
+     * parent with liquid, whose vertex is one of the element's).
+     */
+    bool
+    has_liquid(
+      const typename Triangulation<dim>::active_cell_iterator &cell) const
+    {
+      return location(cell) != Location::empty;
+    }
+
+    /**
+     * After the flow unknowns are distributed (active FE index @p fe_index
+     * on cells with flow unknowns): receive the unknowns at the parent's
+     * vertices of every ghost cell on its parent from the rank that owns
+     * it.
+     */
+    void
+    exchange_parent_dofs(const DoFHandler<dim> &dof_handler,
+                         const unsigned int     fe_index);
+
+    /** Of component @p c at vertex @p v of the parent of the owned or ghost
+     * @p cell, which is on its parent (after exchange_parent_dofs()). */
+    types::global_dof_index
+    parent_vertex_dof(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const unsigned int                                    v,
+      const unsigned int                                    c) const;
+
+    /** The parent vertices' unknowns of ghost cells that are not locally
+     * relevant (after exchange_parent_dofs()). */
+    const IndexSet &
+    far_parent_dofs() const
+    {
+      return far_dofs;
+    }
+
+    /**
+     * Into @p constraints: every flow unknown of a cell on its parent at a
+     * node that is not a vertex of the parent equals the parent's Q1
+     * interpolant, in every component. Owned and ghost cells with flow
+     * unknowns (active FE index @p fe_index; after exchange_parent_dofs()).
+     * Unknowns already constrained are left alone.
+     */
+    void
+    make_interpolation_constraints(
+      const DoFHandler<dim>     &dof_handler,
+      const unsigned int         fe_index,
+      AffineConstraints<double> &constraints) const;
+
+  private:
+    const bool               on_parents;
+    const unsigned int       finest_level;
+    const LiquidDomain<dim> *domain = nullptr;
+    /** With parents: by active cell index, of owned and ghost cells. */
+    std::vector<Location> element_locations;
+    /** Unknowns at the parent's vertices, (vertex, component) in
+     * lexicographic order, of ghost cells on their parent, by active cell
+     * index. */
+    std::map<unsigned int, std::vector<types::global_dof_index>>
+             ghost_parent_dofs;
+    IndexSet far_dofs;
+  };
+} // namespace vefs
+
+#endif
