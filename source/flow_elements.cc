@@ -1,10 +1,8 @@
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <boost/serialization/vector.hpp>
 #include <vefs/flow_elements.h>
 
-#include <array>
 
 namespace vefs
 {
@@ -13,6 +11,81 @@ namespace vefs
     : on_parents(parameters.flow_on_parents)
     , finest_level(parameters.max_level)
   {
+    const unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    child_vertex_weights.resize(n_vertices);
+    for (unsigned int c = 0; c < n_vertices; ++c)
+      {
+        child_vertex_weights[c].resize(n_vertices);
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          for (unsigned int j = 0; j < n_vertices; ++j)
+            {
+              // Child c's vertex v sits at (bit d of c + bit d of v) / 2 in
+              // direction d of the parent (children are numbered as the
+              // vertices they hold).
+              double weight = 1;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const double xi = 0.5 * (((c >> d) & 1) + ((v >> d) & 1));
+                  weight *= ((j >> d) & 1) ? xi : 1 - xi;
+                }
+              if (weight != 0)
+                child_vertex_weights[c][v].emplace_back(j, weight);
+            }
+      }
+  }
+
+  template <int dim>
+  void
+  FlowElements<dim>::restrict_to_parent(const FiniteElement<dim> &fe,
+                                        const unsigned int        child,
+                                        const FullMatrix<double> &fine,
+                                        FullMatrix<double>       &parent) const
+  {
+    const unsigned int n = fe.n_dofs_per_cell();
+    // Q1 in every component: dof i is the vertex 'second' of the component
+    // 'first'.
+    const auto parent_dof = [&](const unsigned int i,
+                                const unsigned int vertex) {
+      return fe.component_to_system_index(fe.system_to_component_index(i).first,
+                                          vertex);
+    };
+    FullMatrix<double> right(n, n);
+    for (unsigned int j = 0; j < n; ++j)
+      for (const auto &[vertex, weight] :
+           child_vertex_weights[child][fe.system_to_component_index(j).second])
+        {
+          const unsigned int J = parent_dof(j, vertex);
+          for (unsigned int i = 0; i < n; ++i)
+            right(i, J) += fine(i, j) * weight;
+        }
+    parent.reinit(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (const auto &[vertex, weight] :
+           child_vertex_weights[child][fe.system_to_component_index(i).second])
+        {
+          const unsigned int I = parent_dof(i, vertex);
+          for (unsigned int j = 0; j < n; ++j)
+            parent(I, j) += weight * right(i, j);
+        }
+  }
+
+  template <int dim>
+  void
+  FlowElements<dim>::restrict_to_parent(const FiniteElement<dim> &fe,
+                                        const unsigned int        child,
+                                        const Vector<double>     &fine,
+                                        Vector<double>           &parent) const
+  {
+    const unsigned int n = fe.n_dofs_per_cell();
+    parent.reinit(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const auto [component, child_vertex] = fe.system_to_component_index(i);
+        for (const auto &[vertex, weight] :
+             child_vertex_weights[child][child_vertex])
+          parent(fe.component_to_system_index(component, vertex)) +=
+            weight * fine(i);
+      }
   }
 
   template <int dim>
@@ -69,7 +142,8 @@ namespace vefs
   template <int dim>
   void
   FlowElements<dim>::exchange_parent_dofs(const DoFHandler<dim> &dof_handler,
-                                          const unsigned int     fe_index)
+                                          const unsigned int     fe_index,
+                                          const IndexSet        &relevant)
   {
     ghost_parent_dofs.clear();
     far_dofs.clear();
@@ -98,8 +172,6 @@ namespace vefs
         ghost_parent_dofs[cell->active_cell_index()] = dofs;
       });
 
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     far_dofs.set_size(dof_handler.n_dofs());
     std::vector<types::global_dof_index> far;
     for (const auto &[index, dofs] : ghost_parent_dofs)
@@ -114,9 +186,9 @@ namespace vefs
   template <int dim>
   types::global_dof_index
   FlowElements<dim>::parent_vertex_dof(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    const unsigned int                                    v,
-    const unsigned int                                    c) const
+    const typename DoFHandler<dim>::cell_iterator &cell,
+    const unsigned int                             v,
+    const unsigned int                             c) const
   {
     const auto sibling = cell->parent()->child(v);
     if (!sibling->is_artificial())
@@ -135,51 +207,31 @@ namespace vefs
   {
     if (!on_parents)
       return;
-    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    const unsigned int     n_components =
+    const unsigned int n_components =
       dof_handler.get_fe_collection()[fe_index].n_components();
-    std::array<double, n_vertices>                  weights;
-    std::array<types::global_dof_index, n_vertices> parent_dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial() && cell->active_fe_index() == fe_index &&
           on_parent(cell))
         {
-          const auto         parent = cell->parent();
-          const unsigned int child  = parent->child_iterator_to_index(cell);
+          const unsigned int child =
+            cell->parent()->child_iterator_to_index(cell);
           for (const unsigned int v : cell->vertex_indices())
             {
-              // The vertex in the parent's reference cell: child c's vertex
-              // v sits at (bit d of c + bit d of v) / 2 in direction d
-              // (deal.II numbers children as the vertices they hold).
-              Point<dim> xi;
-              bool       is_parent_vertex = true;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  xi[d] = 0.5 * (((child >> d) & 1) + ((v >> d) & 1));
-                  if (xi[d] == 0.5)
-                    is_parent_vertex = false;
-                }
-              if (is_parent_vertex)
+              const auto &weights = child_vertex_weights[child][v];
+              // A vertex of the parent is its own unknown.
+              if (weights.size() == 1)
                 continue;
-              for (unsigned int j = 0; j < n_vertices; ++j)
-                {
-                  weights[j] = 1;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    weights[j] *= ((j >> d) & 1) ? xi[d] : 1 - xi[d];
-                }
               for (unsigned int c = 0; c < n_components; ++c)
                 {
-                  for (unsigned int j = 0; j < n_vertices; ++j)
-                    if (weights[j] != 0)
-                      parent_dofs[j] = parent_vertex_dof(cell, j, c);
                   const types::global_dof_index dof =
                     cell->vertex_dof_index(v, c, fe_index);
                   if (constraints.is_constrained(dof))
                     continue;
                   constraints.add_line(dof);
-                  for (unsigned int j = 0; j < n_vertices; ++j)
-                    if (weights[j] != 0)
-                      constraints.add_entry(dof, parent_dofs[j], weights[j]);
+                  for (const auto &[vertex, weight] : weights)
+                    constraints.add_entry(dof,
+                                          parent_vertex_dof(cell, vertex, c),
+                                          weight);
                 }
             }
         }

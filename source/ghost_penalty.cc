@@ -3,6 +3,7 @@
 #include <vefs/ghost_penalty.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace vefs
 {
@@ -67,12 +68,10 @@ namespace vefs
         return;
       if (!matrices_wanted)
         {
-          // The sparsity pattern needs only the dofs of both cells, and
+          // The sparsity pattern needs only the dofs of both elements, and
           // couples each component with itself only.
-          cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
-          cell->get_dof_indices(cell_dofs);
-          neighbor_dofs.resize(neighbor->get_fe().n_dofs_per_cell());
-          neighbor->get_dof_indices(neighbor_dofs);
+          get_element_dofs(cell, cell_dofs);
+          get_element_dofs(neighbor, neighbor_dofs);
           for (unsigned int c = 0; c < flow_fe.n_components(); ++c)
             {
               dofs.clear();
@@ -90,9 +89,7 @@ namespace vefs
         }
       interface_values
         .reinit(cell, face, subface, neighbor, neighbor_face, neighbor_subface);
-      const unsigned int n = interface_values.n_current_interface_dofs();
-      matrix.reinit(n, n);
-      schur.reinit(n, n);
+      expand_to_elements(cell, neighbor);
       // Between two cut cells each side weighs in with half the penalty
       // and its own h.
       const Weights weights = neighbor_is_cut
@@ -101,8 +98,8 @@ namespace vefs
                                                           : face_weights(elements.size(cell), 1.);
       compute(weights);
       if (keep)
-        keep_face(interface_values.get_interface_dof_indices(), next_to_walls);
-      action(matrix, schur, interface_values.get_interface_dof_indices());
+        keep_face(element_dofs, next_to_walls);
+      action(matrix, schur, element_dofs);
     };
 
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -195,31 +192,103 @@ namespace vefs
 
   template <int dim>
   void
+  GhostPenalty<dim>::get_element_dofs(
+    const typename DoFHandler<dim>::cell_iterator &cell,
+    std::vector<types::global_dof_index>          &dofs) const
+  {
+    dofs.resize(flow_fe.n_dofs_per_cell());
+    if (!elements.on_parent(cell))
+      {
+        cell->get_dof_indices(dofs);
+        return;
+      }
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      {
+        const auto [c, v] = flow_fe.system_to_component_index(i);
+        dofs[i]           = elements.parent_vertex_dof(cell, v, c);
+      }
+  }
+
+  template <int dim>
+  void
+  GhostPenalty<dim>::expand_to_elements(
+    const typename DoFHandler<dim>::cell_iterator &cell,
+    const typename DoFHandler<dim>::cell_iterator &neighbor)
+  {
+    const auto &interface_dofs = interface_values.get_interface_dof_indices();
+    const unsigned int n       = interface_dofs.size();
+    element_dofs.clear();
+    component.clear();
+    expansion.resize(n);
+    // The index of an element dof in element_dofs, added if new.
+    const auto index_of = [&](const types::global_dof_index dof,
+                              const unsigned int            c) {
+      const auto found =
+        std::find(element_dofs.begin(), element_dofs.end(), dof);
+      if (found != element_dofs.end())
+        return static_cast<unsigned int>(found - element_dofs.begin());
+      element_dofs.push_back(dof);
+      component.push_back(c);
+      return static_cast<unsigned int>(element_dofs.size() - 1);
+    };
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const auto dof_pair = interface_values.interface_dof_to_dof_indices(k);
+        // A dof of a side on its parent is interpolated from the parent's
+        // vertices (a dof both sides share, the same way from either).
+        const bool from_cell = dof_pair[0] != numbers::invalid_unsigned_int &&
+                               elements.on_parent(cell);
+        const bool from_neighbor =
+          !from_cell && dof_pair[1] != numbers::invalid_unsigned_int &&
+          elements.on_parent(neighbor);
+        const auto        &side = from_neighbor ? neighbor : cell;
+        const unsigned int local =
+          from_neighbor                                  ? dof_pair[1]
+          : dof_pair[0] != numbers::invalid_unsigned_int ? dof_pair[0]
+                                                         : dof_pair[1];
+        const auto [c, v] = flow_fe.system_to_component_index(local);
+        expansion[k].clear();
+        if (from_cell || from_neighbor)
+          {
+            const unsigned int child =
+              side->parent()->child_iterator_to_index(side);
+            for (const auto &[vertex, weight] :
+                 elements.vertex_weights(child, v))
+              expansion[k].emplace_back(
+                index_of(elements.parent_vertex_dof(side, vertex, c), c),
+                weight);
+          }
+        else
+          expansion[k].emplace_back(index_of(interface_dofs[k], c), 1.);
+      }
+  }
+
+  template <int dim>
+  void
   GhostPenalty<dim>::compute(const Weights &weights)
   {
-    // Each interface dof belongs to one component: the jump of its normal
-    // derivative is a scalar, and dofs of different components do not
-    // couple.
-    const unsigned int n = interface_values.n_current_interface_dofs();
-    component.resize(n);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const auto dof_pair = interface_values.interface_dof_to_dof_indices(i);
-        component[i] =
-          flow_fe
-            .system_to_component_index(
-              dof_pair[0] != numbers::invalid_unsigned_int ? dof_pair[0]
-                                                           : dof_pair[1])
-            .first;
-      }
+    // Each dof belongs to one component: the jump of its normal derivative
+    // is a scalar, and dofs of different components do not couple.
+    const unsigned int n_interface =
+      interface_values.n_current_interface_dofs();
+    const unsigned int n = element_dofs.size();
+    matrix.reinit(n, n);
+    schur.reinit(n, n);
     jump.resize(n);
     for (const unsigned int q : interface_values.quadrature_point_indices())
       {
         const Tensor<1, dim> normal = interface_values.normal(q);
-        for (unsigned int i = 0; i < n; ++i)
-          jump[i] =
-            interface_values.jump_in_shape_gradients(i, q, component[i]) *
-            normal;
+        std::fill(jump.begin(), jump.end(), 0.);
+        for (unsigned int k = 0; k < n_interface; ++k)
+          {
+            const double jump_k = interface_values.jump_in_shape_gradients(
+                                    k,
+                                    q,
+                                    component[expansion[k][0].first]) *
+                                  normal;
+            for (const auto &[i, weight] : expansion[k])
+              jump[i] += weight * jump_k;
+          }
         const double JxW = interface_values.JxW(q);
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)

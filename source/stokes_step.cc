@@ -146,7 +146,7 @@ namespace vefs
                              owned.get_view(n_u, n_u + n_p)};
     relevant_partitioning = {relevant_dofs.get_view(0, n_u),
                              relevant_dofs.get_view(n_u, n_u + n_p)};
-    elements.exchange_parent_dofs(dof_handler, liquid_index);
+    elements.exchange_parent_dofs(dof_handler, liquid_index, relevant_dofs);
     touched_dofs = relevant_dofs;
     touched_dofs.add_indices(elements.far_parent_dofs());
     touched_partitioning = {touched_dofs.get_view(0, n_u),
@@ -299,7 +299,8 @@ namespace vefs
 
     system_rhs.reinit(owned_partitioning, comm);
     lumped_pressure_mass.reinit(owned_partitioning, comm);
-    solution.reinit(owned_partitioning, relevant_partitioning, comm);
+    // Touched: the contact reactions of faces read far parent vertices.
+    solution.reinit(owned_partitioning, touched_partitioning, comm);
   }
 
   template <int dim>
@@ -418,20 +419,66 @@ namespace vefs
     std::vector<types::global_dof_index> dof_indices(
       fe_collection[liquid_index].n_dofs_per_cell());
 
+    const FiniteElement<dim> &fe = fe_collection[liquid_index];
+    FullMatrix<double>        parent_matrix, parent_schur;
+    Vector<double>            parent_rhs, parent_pressure_mass;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && domain->has_liquid(cell))
         {
           local.compute(cell);
-          cell->get_dof_indices(dof_indices);
-          assembly.distribute_local_to_global(local.matrix,
-                                              local.rhs,
+          if (!elements.on_parent(cell))
+            {
+              cell->get_dof_indices(dof_indices);
+              assembly.distribute_local_to_global(local.matrix,
+                                                  local.rhs,
+                                                  dof_indices,
+                                                  system_matrix,
+                                                  system_rhs);
+              assembly.distribute_local_to_global(local.schur,
+                                                  dof_indices,
+                                                  schur_matrix);
+              assembly.distribute_local_to_global(local.pressure_mass,
+                                                  dof_indices,
+                                                  lumped_pressure_mass);
+              continue;
+            }
+          // In the parent's unknowns directly: the same sums as through
+          // the interpolation constraints, without expanding every entry.
+          const unsigned int child =
+            cell->parent()->child_iterator_to_index(cell);
+          elements.restrict_to_parent(fe, child, local.matrix, parent_matrix);
+          elements.restrict_to_parent(fe, child, local.schur, parent_schur);
+          elements.restrict_to_parent(fe, child, local.rhs, parent_rhs);
+          elements.restrict_to_parent(fe,
+                                      child,
+                                      local.pressure_mass,
+                                      parent_pressure_mass);
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            {
+              const auto [component, vertex] = fe.system_to_component_index(i);
+              dof_indices[i] =
+                elements.parent_vertex_dof(cell, vertex, component);
+              // The rows of interpolated unknowns hold their diagonal
+              // only, of the size it would have (the solution is zero
+              // there until the constraints are distributed).
+              if (elements.vertex_weights(child, vertex).size() > 1)
+                {
+                  const auto dof =
+                    cell->vertex_dof_index(vertex, component, liquid_index);
+                  system_matrix.add(dof, dof, std::abs(local.matrix(i, i)));
+                  if (component == dim)
+                    schur_matrix.add(dof, dof, std::abs(local.schur(i, i)));
+                }
+            }
+          assembly.distribute_local_to_global(parent_matrix,
+                                              parent_rhs,
                                               dof_indices,
                                               system_matrix,
                                               system_rhs);
-          assembly.distribute_local_to_global(local.schur,
+          assembly.distribute_local_to_global(parent_schur,
                                               dof_indices,
                                               schur_matrix);
-          assembly.distribute_local_to_global(local.pressure_mass,
+          assembly.distribute_local_to_global(parent_pressure_mass,
                                               dof_indices,
                                               lumped_pressure_mass);
         }

@@ -4,6 +4,8 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <vefs/liquid_domain.h>
 #include <vefs/parameters.h>
@@ -107,19 +109,19 @@ namespace vefs
      * After the flow unknowns are distributed (active FE index @p fe_index
      * on cells with flow unknowns): receive the unknowns at the parent's
      * vertices of every ghost cell on its parent from the rank that owns
-     * it.
+     * it. @p relevant: the locally relevant unknowns.
      */
     void
     exchange_parent_dofs(const DoFHandler<dim> &dof_handler,
-                         const unsigned int     fe_index);
+                         const unsigned int     fe_index,
+                         const IndexSet        &relevant);
 
     /** Of component @p c at vertex @p v of the parent of the owned or ghost
      * @p cell, which is on its parent (after exchange_parent_dofs()). */
     types::global_dof_index
-    parent_vertex_dof(
-      const typename DoFHandler<dim>::active_cell_iterator &cell,
-      const unsigned int                                    v,
-      const unsigned int                                    c) const;
+    parent_vertex_dof(const typename DoFHandler<dim>::cell_iterator &cell,
+                      const unsigned int                             v,
+                      const unsigned int                             c) const;
 
     /** The parent vertices' unknowns of ghost cells that are not locally
      * relevant (after exchange_parent_dofs()). */
@@ -142,7 +144,41 @@ namespace vefs
       const unsigned int         fe_index,
       AffineConstraints<double> &constraints) const;
 
+    /**
+     * The cell matrix @p fine of a cell on its parent, child @p child, in
+     * the unknowns of the parent's vertices: P^T fine P with P the Q1
+     * interpolation from the parent's vertices to the child's, component by
+     * component (the cell's FE @p fe: Q1 in every component). The assembly
+     * adds it with the parent's unknowns (parent_vertex_dof()) instead of
+     * expanding the interpolation constraints of every entry.
+     */
+    void
+    restrict_to_parent(const FiniteElement<dim> &fe,
+                       const unsigned int        child,
+                       const FullMatrix<double> &fine,
+                       FullMatrix<double>       &parent) const;
+
+    /** The same for a cell vector: P^T fine. */
+    void
+    restrict_to_parent(const FiniteElement<dim> &fe,
+                       const unsigned int        child,
+                       const Vector<double>     &fine,
+                       Vector<double>           &parent) const;
+
+    /** The non-zero weights (vertex, weight) of the parent's vertices at
+     * vertex @p v of child @p child. */
+    const std::vector<std::pair<unsigned int, double>> &
+    vertex_weights(const unsigned int child, const unsigned int v) const
+    {
+      return child_vertex_weights[child][v];
+    }
+
   private:
+    /** The non-zero weights (vertex, weight) of the parent's vertices at
+     * vertex v of child c: [c][v]. */
+    std::vector<std::vector<std::vector<std::pair<unsigned int, double>>>>
+      child_vertex_weights;
+
     const bool               on_parents;
     const unsigned int       finest_level;
     const LiquidDomain<dim> *domain = nullptr;

@@ -96,7 +96,25 @@ namespace vefs
     Weights
     face_weights(const double h, const double share) const;
 
-    /** The matrices of the face of the last reinit(). */
+    /** The dofs of the flow element of @p cell (FlowElements): its own, or
+     * its parent's vertices'. */
+    void
+    get_element_dofs(const typename DoFHandler<dim>::cell_iterator &cell,
+                     std::vector<types::global_dof_index>          &dofs) const;
+
+    /**
+     * The face of the last reinit() between @p cell and @p neighbor in the
+     * dofs of their flow elements: element_dofs, their component, and the
+     * expansion of every interface dof (the identity where the side's
+     * element is the cell itself, the parent's Q1 interpolation where it is
+     * the parent).
+     */
+    void
+    expand_to_elements(const typename DoFHandler<dim>::cell_iterator &cell,
+                       const typename DoFHandler<dim>::cell_iterator &neighbor);
+
+    /** The matrices of the face of the last expand_to_elements(), in
+     * element_dofs. */
     void
     compute(const Weights &weights);
 
@@ -129,10 +147,15 @@ namespace vefs
     FEInterfaceValues<dim>    interface_values;
     FullMatrix<double>        matrix;
     FullMatrix<double>        schur;
-    std::vector<unsigned int> component;
-    std::vector<double>       jump;
-    std::vector<KeptFace>     kept_faces;
-    bool                      all_faces_kept = false;
+    /** Of the face being computed: the dofs of both flow elements and the
+     * component of each. */
+    std::vector<types::global_dof_index> element_dofs;
+    std::vector<unsigned int>            component;
+    /** By interface dof: (index in element_dofs, weight). */
+    std::vector<std::vector<std::pair<unsigned int, double>>> expansion;
+    std::vector<double>                                       jump;
+    std::vector<KeptFace>                                     kept_faces;
+    bool all_faces_kept = false;
   };
 } // namespace vefs
 
