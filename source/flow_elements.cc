@@ -8,30 +8,10 @@ namespace vefs
 {
   template <int dim>
   FlowElements<dim>::FlowElements(const Parameters &parameters)
-    : on_parents(parameters.flow_on_parents)
+    : child_vertex_weights(make_child_vertex_weights<dim>())
+    , on_parents(parameters.flow_on_parents)
     , finest_level(parameters.max_level)
   {
-    const unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    child_vertex_weights.resize(n_vertices);
-    for (unsigned int c = 0; c < n_vertices; ++c)
-      {
-        child_vertex_weights[c].resize(n_vertices);
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          for (unsigned int j = 0; j < n_vertices; ++j)
-            {
-              // Child c's vertex v sits at (bit d of c + bit d of v) / 2 in
-              // direction d of the parent (children are numbered as the
-              // vertices they hold).
-              double weight = 1;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  const double xi = 0.5 * (((c >> d) & 1) + ((v >> d) & 1));
-                  weight *= ((j >> d) & 1) ? xi : 1 - xi;
-                }
-              if (weight != 0)
-                child_vertex_weights[c][v].emplace_back(j, weight);
-            }
-      }
   }
 
   template <int dim>
@@ -101,8 +81,11 @@ namespace vefs
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          Location location = domain.location(cell);
-          if (on_parent(cell))
+          if (!on_parent(cell))
+            element_locations[cell->active_cell_index()] =
+              domain.location(cell);
+          // A family once, from its first child.
+          else if (cell->parent()->child(0) == cell)
             {
               const auto parent   = cell->parent();
               bool       all_full = true, all_empty = true;
@@ -120,11 +103,13 @@ namespace vefs
                   all_empty =
                     all_empty && domain.location(child) == Location::empty;
                 }
-              location = all_full    ? Location::full
-                         : all_empty ? Location::empty
-                                     : Location::cut;
+              const Location location = all_full    ? Location::full
+                                        : all_empty ? Location::empty
+                                                    : Location::cut;
+              for (unsigned int c = 0; c < parent->n_children(); ++c)
+                element_locations[parent->child(c)->active_cell_index()] =
+                  location;
             }
-          element_locations[cell->active_cell_index()] = location;
         }
     GridTools::exchange_cell_data_to_ghosts<unsigned char, DoFHandler<dim>>(
       dof_handler,

@@ -217,9 +217,28 @@ namespace vefs
   {
     const auto &interface_dofs = interface_values.get_interface_dof_indices();
     const unsigned int n       = interface_dofs.size();
+    expansion.resize(n);
+    if (!elements.on_parent(cell) && !elements.on_parent(neighbor))
+      {
+        // Both cells are their own elements: the interface dofs themselves.
+        element_dofs = interface_dofs;
+        component.resize(n);
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const auto dof_pair =
+              interface_values.interface_dof_to_dof_indices(k);
+            component[k] =
+              flow_fe
+                .system_to_component_index(
+                  dof_pair[0] != numbers::invalid_unsigned_int ? dof_pair[0]
+                                                               : dof_pair[1])
+                .first;
+            expansion[k].assign(1, {k, 1.});
+          }
+        return;
+      }
     element_dofs.clear();
     component.clear();
-    expansion.resize(n);
     // The index of an element dof in element_dofs, added if new.
     const auto index_of = [&](const types::global_dof_index dof,
                               const unsigned int            c) {

@@ -1,4 +1,3 @@
-#include <vefs/box_mesh_locator.h>
 #include <vefs/vertex_field_transfer.h>
 
 #include <algorithm>
@@ -13,23 +12,10 @@ namespace vefs
     const std::vector<Slot>                   &slots)
     : mesh(mesh)
     , slots(slots)
+    , child_weights(make_child_vertex_weights<dim>())
   {
     for (const Slot &slot : slots)
       n_values += slot.components.size();
-    // Child c's vertex v sits at (bits of c + bits of v) / 2 in the parent's
-    // unit cell: the Q1 weights of the parent's vertices there.
-    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    child_weights.resize(n_vertices * n_vertices * n_vertices);
-    for (unsigned int c = 0; c < n_vertices; ++c)
-      for (unsigned int v = 0; v < n_vertices; ++v)
-        {
-          Point<dim> xi;
-          for (unsigned int d = 0; d < dim; ++d)
-            xi[d] = 0.5 * (((c >> d) & 1) + ((v >> d) & 1));
-          for (unsigned int w = 0; w < n_vertices; ++w)
-            child_weights[(c * n_vertices + v) * n_vertices + w] =
-              BoxMeshLocator<dim>::vertex_weight(xi, w);
-        }
     // Every cell packs the same number of bytes: deal.II's fixed-size
     // transfer, cheaper than the variable one.
     handle = mesh.register_data_attach(
@@ -121,15 +107,9 @@ namespace vefs
           {
             std::fill(child.begin(), child.end(), 0.);
             for (unsigned int v = 0; v < n_vertices; ++v)
-              for (unsigned int w = 0; w < n_vertices; ++w)
-                {
-                  const double weight =
-                    child_weights[(c * n_vertices + v) * n_vertices + w];
-                  if (weight != 0)
-                    for (unsigned int k = 0; k < n_values; ++k)
-                      child[v * n_values + k] +=
-                        weight * parent[w * n_values + k];
-                }
+              for (const auto &[w, weight] : child_weights[c][v])
+                for (unsigned int k = 0; k < n_values; ++k)
+                  child[v * n_values + k] += weight * parent[w * n_values + k];
             write(fields, cell->child(c), child.data(), vectors);
           }
       });

@@ -9,6 +9,7 @@
 #include <deal.II/non_matching/immersed_surface_quadrature.h>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace vefs
@@ -54,6 +55,38 @@ namespace vefs
       return result;
     }
   } // namespace internal
+
+  /**
+   * The Q1 interpolation from a parent's vertices to its children's: by
+   * child c and child vertex v, the non-zero weights (parent vertex w,
+   * weight). Child c's vertex v sits at (bit d of c + bit d of v) / 2 in
+   * direction d of the parent's reference cell (deal.II numbers the
+   * children of an isotropic refinement as the vertices they hold).
+   */
+  template <int dim>
+  using ChildVertexWeights =
+    std::vector<std::vector<std::vector<std::pair<unsigned int, double>>>>;
+
+  template <int dim>
+  ChildVertexWeights<dim>
+  make_child_vertex_weights()
+  {
+    constexpr unsigned int  n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    ChildVertexWeights<dim> weights(
+      n_vertices,
+      std::vector<std::vector<std::pair<unsigned int, double>>>(n_vertices));
+    for (unsigned int c = 0; c < n_vertices; ++c)
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        {
+          Point<dim> xi;
+          for (unsigned int d = 0; d < dim; ++d)
+            xi[d] = 0.5 * (((c >> d) & 1) + ((v >> d) & 1));
+          for (unsigned int w = 0; w < n_vertices; ++w)
+            if (const double weight = internal::q1_shape(w, xi); weight != 0)
+              weights[c][v].emplace_back(w, weight);
+        }
+    return weights;
+  }
 
   /**
    * The Q1 shape functions, their gradients and JxW at the points of a

@@ -7,6 +7,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <vefs/box_q1_values.h>
 #include <vefs/liquid_domain.h>
 #include <vefs/parameters.h>
 
@@ -176,8 +177,7 @@ namespace vefs
   private:
     /** The non-zero weights (vertex, weight) of the parent's vertices at
      * vertex v of child c: [c][v]. */
-    std::vector<std::vector<std::vector<std::pair<unsigned int, double>>>>
-      child_vertex_weights;
+    const ChildVertexWeights<dim> child_vertex_weights;
 
     const bool               on_parents;
     const unsigned int       finest_level;

@@ -3,6 +3,7 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <vefs/box_q1_values.h>
 #include <vefs/transported_fields.h>
 
 #include <vector>
@@ -76,12 +77,9 @@ namespace vefs
     std::vector<Slot>                          slots;
     /** Carried values per vertex: the components of all slots. */
     unsigned int n_values = 0;
-    /**
-     * Weight of the parent's vertex w at vertex v of child c, at
-     * (c * vertices + v) * vertices + w.
-     */
-    std::vector<double> child_weights;
-    unsigned int        handle;
+    /** The parent's vertices' weights at its children's vertices. */
+    const ChildVertexWeights<dim> child_weights;
+    unsigned int                  handle;
   };
 } // namespace vefs
 
