@@ -215,13 +215,26 @@ namespace vefs
     // iterations on fine meshes: mu = 10 Pa s, L = 8, 25.6 against 16.5 per
     // step), but at least min_pressure_mass_fraction of the whole cell's:
     // a small cut must not make the preconditioner's M_p^-1 large.
-    for (unsigned int i = 0; i < n_dofs; ++i)
-      if (component[i] == dim)
-        pressure_mass(i) =
-          std::max(pressure_mass(i),
-                   min_pressure_mass_fraction * cell->measure() /
-                     cell->n_vertices() / mu);
+    // A cell on its parent leaves the floor to its element: the parent's
+    // vertices take it once its children's masses are summed.
+    if (!elements.on_parent(cell))
+      apply_pressure_mass_floor(pressure_mass, cell->measure());
     add_open_wall_terms(cell, h);
+  }
+
+  template <int dim>
+  void
+  StokesCellSystem<dim>::apply_pressure_mass_floor(
+    Vector<double> &element_pressure_mass,
+    const double    element_measure) const
+  {
+    const unsigned int n_vertices = BoxCellValues<dim>::n_vertices;
+    for (unsigned int i = 0; i < element_pressure_mass.size(); ++i)
+      if (component[i] == dim)
+        element_pressure_mass(i) =
+          std::max(element_pressure_mass(i),
+                   min_pressure_mass_fraction * element_measure / n_vertices /
+                     mu);
   }
 
   template <int dim>
