@@ -148,6 +148,16 @@ namespace vefs
                                const bool next_to_walls)
   {
     KeptFace face{dofs, component, {}, {}, next_to_walls};
+    // Reserved: the faces between parents hold up to 64 dofs, and growing
+    // the vectors entry by entry took 7 % of a step at 2.5 mm.
+    std::vector<unsigned int> n_of_component(flow_fe.n_components(), 0);
+    for (const unsigned int c : component)
+      ++n_of_component[c];
+    std::size_t n_entries = 0;
+    for (const unsigned int n : n_of_component)
+      n_entries += n * n;
+    face.matrix.reserve(n_entries);
+    face.schur.reserve(n_of_component[dim] * n_of_component[dim]);
     for (unsigned int i = 0; i < dofs.size(); ++i)
       for (unsigned int j = 0; j < dofs.size(); ++j)
         if (component[i] == component[j])
