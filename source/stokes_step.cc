@@ -424,7 +424,8 @@ namespace vefs
     FullMatrix<double>        parent_matrix, parent_schur;
     Vector<double>            parent_rhs, parent_pressure_mass;
     // The lumped pressure mass of each parent, summed over its children
-    // before the floor (StokesCellSystem::apply_pressure_mass_floor).
+    // before the floor of its element
+    // (StokesCellSystem::apply_pressure_mass_floor), as a cell's own.
     std::map<typename DoFHandler<dim>::cell_iterator,
              std::pair<Vector<double>, std::vector<types::global_dof_index>>>
       family_pressure_mass;
@@ -435,6 +436,8 @@ namespace vefs
           if (!elements.on_parent(cell))
             {
               cell->get_dof_indices(dof_indices);
+              local.apply_pressure_mass_floor(local.pressure_mass,
+                                              cell->measure());
               assembly.distribute_local_to_global(local.matrix,
                                                   local.rhs,
                                                   dof_indices,

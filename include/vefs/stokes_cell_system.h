@@ -58,7 +58,9 @@ namespace vefs
     FullMatrix<double> matrix;
     Vector<double>     rhs;
     FullMatrix<double> schur;
-    Vector<double>     pressure_mass;
+    /** The lumped pressure mass of the liquid part, divided by mu; without
+     * the floor of its flow element (apply_pressure_mass_floor()). */
+    Vector<double> pressure_mass;
     /** tau/rho + tau_K of the cell, the weight of the Schur Laplacian. */
     double schur_weight = 0;
 
