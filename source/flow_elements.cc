@@ -16,10 +16,11 @@ namespace vefs
 
   template <int dim>
   void
-  FlowElements<dim>::restrict_to_parent(const FiniteElement<dim> &fe,
-                                        const unsigned int        child,
-                                        const FullMatrix<double> &fine,
-                                        FullMatrix<double>       &parent) const
+  FlowElements<dim>::add_restricted_to_parent(
+    const FiniteElement<dim> &fe,
+    const unsigned int        child,
+    const FullMatrix<double> &fine,
+    FullMatrix<double>       &parent) const
   {
     const unsigned int n = fe.n_dofs_per_cell();
     // Q1 in every component: dof i is the vertex 'second' of the component
@@ -38,7 +39,6 @@ namespace vefs
           for (unsigned int i = 0; i < n; ++i)
             right(i, J) += fine(i, j) * weight;
         }
-    parent.reinit(n, n);
     for (unsigned int i = 0; i < n; ++i)
       for (const auto &[vertex, weight] :
            child_vertex_weights[child][fe.system_to_component_index(i).second])
@@ -51,13 +51,12 @@ namespace vefs
 
   template <int dim>
   void
-  FlowElements<dim>::restrict_to_parent(const FiniteElement<dim> &fe,
-                                        const unsigned int        child,
-                                        const Vector<double>     &fine,
-                                        Vector<double>           &parent) const
+  FlowElements<dim>::add_restricted_to_parent(const FiniteElement<dim> &fe,
+                                              const unsigned int        child,
+                                              const Vector<double>     &fine,
+                                              Vector<double> &parent) const
   {
     const unsigned int n = fe.n_dofs_per_cell();
-    parent.reinit(n);
     for (unsigned int i = 0; i < n; ++i)
       {
         const auto [component, child_vertex] = fe.system_to_component_index(i);

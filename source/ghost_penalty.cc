@@ -33,14 +33,13 @@ namespace vefs
                                    const Faces            faces)
   {
     using Location = typename LiquidDomain<dim>::Location;
-    if (matrices_wanted && all_faces_kept)
+    if (matrices_wanted && wall_faces_kept && faces == Faces::next_to_walls)
       {
         for (const KeptFace &face : kept_faces)
-          if (faces == Faces::all || face.next_to_walls)
-            {
-              recall_face(face);
-              action(matrix, schur, face.dofs);
-            }
+          {
+            recall_face(face);
+            action(matrix, schur, face.dofs);
+          }
         return;
       }
     const bool keep = matrices_wanted && faces == Faces::all;
@@ -97,8 +96,8 @@ namespace vefs
                                     face_weights(elements.size(neighbor), 0.5)
                                                           : face_weights(elements.size(cell), 1.);
       compute(weights);
-      if (keep)
-        keep_face(element_dofs, next_to_walls);
+      if (keep && next_to_walls)
+        keep_face(element_dofs);
       action(matrix, schur, element_dofs);
     };
 
@@ -139,15 +138,14 @@ namespace vefs
                     numbers::invalid_unsigned_int);
           }
     if (keep)
-      all_faces_kept = true;
+      wall_faces_kept = true;
   }
 
   template <int dim>
   void
-  GhostPenalty<dim>::keep_face(const std::vector<types::global_dof_index> &dofs,
-                               const bool next_to_walls)
+  GhostPenalty<dim>::keep_face(const std::vector<types::global_dof_index> &dofs)
   {
-    KeptFace face{dofs, component, {}, {}, next_to_walls};
+    KeptFace face{dofs, component, {}, {}};
     // Reserved: the faces between parents hold up to 64 dofs, and growing
     // the vectors entry by entry took 7 % of a step at 2.5 mm.
     std::vector<unsigned int> n_of_component(flow_fe.n_components(), 0);

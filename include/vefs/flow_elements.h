@@ -146,25 +146,41 @@ namespace vefs
       AffineConstraints<double> &constraints) const;
 
     /**
-     * The cell matrix @p fine of a cell on its parent, child @p child, in
-     * the unknowns of the parent's vertices: P^T fine P with P the Q1
-     * interpolation from the parent's vertices to the child's, component by
-     * component (the cell's FE @p fe: Q1 in every component). The assembly
-     * adds it with the parent's unknowns (parent_vertex_dof()) instead of
-     * expanding the interpolation constraints of every entry.
+     * Whether the owned @p cell, on its parent, is the first owned child of
+     * that parent: the one through which a loop over the owned cells visits
+     * the parent's element once.
+     */
+    bool
+    represents_family(const CellIterator &cell) const
+    {
+      const auto parent = cell->parent();
+      for (unsigned int c = 0; c < parent->n_children(); ++c)
+        if (parent->child(c)->is_locally_owned())
+          return parent->child(c) == cell;
+      return false;
+    }
+
+    /**
+     * Add the cell matrix @p fine of a cell on its parent, child @p child,
+     * to @p parent, in the unknowns of the parent's vertices: P^T fine P
+     * with P the Q1 interpolation from the parent's vertices to the
+     * child's, component by component (the cell's FE @p fe: Q1 in every
+     * component; @p parent of its size). The assembly sums a family so and
+     * adds the sum with the parent's unknowns (parent_vertex_dof()) once,
+     * instead of expanding the interpolation constraints of every entry.
      */
     void
-    restrict_to_parent(const FiniteElement<dim> &fe,
-                       const unsigned int        child,
-                       const FullMatrix<double> &fine,
-                       FullMatrix<double>       &parent) const;
+    add_restricted_to_parent(const FiniteElement<dim> &fe,
+                             const unsigned int        child,
+                             const FullMatrix<double> &fine,
+                             FullMatrix<double>       &parent) const;
 
     /** The same for a cell vector: P^T fine. */
     void
-    restrict_to_parent(const FiniteElement<dim> &fe,
-                       const unsigned int        child,
-                       const Vector<double>     &fine,
-                       Vector<double>           &parent) const;
+    add_restricted_to_parent(const FiniteElement<dim> &fe,
+                             const unsigned int        child,
+                             const Vector<double>     &fine,
+                             Vector<double>           &parent) const;
 
     /** The non-zero weights (vertex, weight) of the parent's vertices at
      * vertex @p v of child @p child. */
