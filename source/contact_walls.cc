@@ -251,13 +251,14 @@ namespace vefs
       [&](const FullMatrix<double> &matrix,
           const FullMatrix<double> &,
           const std::vector<types::global_dof_index> &face_dofs) {
+        // Read once: an access by global index searches the vector's map.
+        values.reinit(face_dofs.size());
+        residual.reinit(face_dofs.size());
+        for (unsigned int j = 0; j < face_dofs.size(); ++j)
+          values(j) = solution(face_dofs[j]);
+        matrix.vmult(residual, values);
         for (unsigned int i = 0; i < face_dofs.size(); ++i)
-          {
-            double row = 0;
-            for (unsigned int j = 0; j < face_dofs.size(); ++j)
-              row += matrix(i, j) * solution(face_dofs[j]);
-            add_reaction(face_dofs[i], row);
-          }
+          add_reaction(face_dofs[i], residual(i));
       },
       GhostPenalty<dim>::Faces::next_to_walls);
     reaction.compress(VectorOperation::add);
