@@ -16,11 +16,10 @@ namespace vefs
 
   template <int dim>
   void
-  FlowElements<dim>::add_restricted_to_parent(
-    const FiniteElement<dim> &fe,
-    const unsigned int        child,
-    const FullMatrix<double> &fine,
-    FullMatrix<double>       &parent) const
+  FlowElements<dim>::add_restricted_to_parent(const FiniteElement<dim> &fe,
+                                              const unsigned int        child,
+                                              const FullMatrix<double> &fine,
+                                              FullMatrix<double> &parent) const
   {
     const unsigned int n = fe.n_dofs_per_cell();
     // Q1 in every component: dof i is the vertex 'second' of the component

@@ -3,6 +3,7 @@
 #include <vefs/ghost_penalty.h>
 
 #include <algorithm>
+#include <array>
 #include <utility>
 
 namespace vefs
@@ -46,7 +47,26 @@ namespace vefs
     if (keep)
       kept_faces.clear();
     std::vector<types::global_dof_index> dofs, cell_dofs, neighbor_dofs;
-    const auto                           visit = [&](const auto        &cell,
+    // The sparsity pattern needs only the dofs of both elements, and
+    // couples each component with itself only.
+    const auto add_to_pattern = [&](const auto &cell, const auto &neighbor) {
+      get_element_dofs(cell, cell_dofs);
+      get_element_dofs(neighbor, neighbor_dofs);
+      for (unsigned int c = 0; c < flow_fe.n_components(); ++c)
+        {
+          dofs.clear();
+          for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+            if (flow_fe.system_to_component_index(i).first == c)
+              {
+                dofs.push_back(cell_dofs[i]);
+                dofs.push_back(neighbor_dofs[i]);
+              }
+          std::sort(dofs.begin(), dofs.end());
+          dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+          action(matrix, schur, dofs);
+        }
+    };
+    const auto visit = [&](const auto        &cell,
                            const unsigned int face,
                            const unsigned int subface,
                            const auto        &neighbor,
@@ -67,23 +87,7 @@ namespace vefs
         return;
       if (!matrices_wanted)
         {
-          // The sparsity pattern needs only the dofs of both elements, and
-          // couples each component with itself only.
-          get_element_dofs(cell, cell_dofs);
-          get_element_dofs(neighbor, neighbor_dofs);
-          for (unsigned int c = 0; c < flow_fe.n_components(); ++c)
-            {
-              dofs.clear();
-              for (unsigned int i = 0; i < cell_dofs.size(); ++i)
-                if (flow_fe.system_to_component_index(i).first == c)
-                  {
-                    dofs.push_back(cell_dofs[i]);
-                    dofs.push_back(neighbor_dofs[i]);
-                  }
-              std::sort(dofs.begin(), dofs.end());
-              dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-              action(matrix, schur, dofs);
-            }
+          add_to_pattern(cell, neighbor);
           return;
         }
       interface_values
@@ -92,10 +96,81 @@ namespace vefs
       // Between two cut cells each side weighs in with half the penalty
       // and its own h.
       const Weights weights = neighbor_is_cut
-                                                          ? face_weights(elements.size(cell), 0.5) +
+                                ? face_weights(elements.size(cell), 0.5) +
                                     face_weights(elements.size(neighbor), 0.5)
-                                                          : face_weights(elements.size(cell), 1.);
+                                : face_weights(elements.size(cell), 1.);
       compute(weights);
+      if (keep && next_to_walls)
+        keep_face(element_dofs);
+      action(matrix, schur, element_dofs);
+    };
+
+    // A fine face, whatever the sizes of the cells and elements on its
+    // sides: through the interface values of the two cells.
+    const auto visit_fine_face = [&](const auto &cell, const unsigned int f) {
+      if (cell->face(f)->has_children())
+        {
+          const unsigned int neighbor_face = cell->neighbor_face_no(f);
+          for (unsigned int s = 0; s < cell->face(f)->n_children(); ++s)
+            visit(cell,
+                  f,
+                  s,
+                  cell->neighbor_child_on_subface(f, s),
+                  neighbor_face,
+                  numbers::invalid_unsigned_int);
+        }
+      else if (cell->neighbor_is_coarser(f))
+        {
+          const auto [neighbor_face, neighbor_subface] =
+            cell->neighbor_of_coarser_neighbor(f);
+          visit(cell,
+                f,
+                numbers::invalid_unsigned_int,
+                cell->neighbor(f),
+                neighbor_face,
+                neighbor_subface);
+        }
+      else
+        visit(cell,
+              f,
+              numbers::invalid_unsigned_int,
+              cell->neighbor(f),
+              cell->neighbor_of_neighbor(f),
+              numbers::invalid_unsigned_int);
+    };
+
+    // The whole face f between the element of @p cell and one of the same
+    // size (between_equal_elements()), in closed form.
+    const auto visit_between_equal = [&](const auto        &cell,
+                                         const unsigned int f) {
+      const unsigned int direction = f / 2;
+      auto               neighbor  = cell->neighbor(f);
+      // A parent beyond: its child next to the face.
+      if (neighbor->has_children())
+        neighbor = neighbor->child((1 - f % 2) << direction);
+      const auto element          = elements.element(cell);
+      const auto neighbor_element = elements.element(neighbor);
+      const bool next_to_walls =
+        element->at_boundary() || neighbor_element->at_boundary();
+      if (!elements.has_liquid(neighbor) ||
+          (faces == Faces::next_to_walls && !next_to_walls))
+        return;
+      const bool neighbor_is_cut = elements.location(neighbor) == Location::cut;
+      if (neighbor_is_cut && neighbor_element->id() < element->id())
+        return;
+      if (!matrices_wanted)
+        {
+          add_to_pattern(cell, neighbor);
+          return;
+        }
+      const Weights weights = neighbor_is_cut
+                                ? face_weights(elements.size(cell), 0.5) +
+                                    face_weights(elements.size(neighbor), 0.5)
+                                : face_weights(elements.size(cell), 1.);
+      if (f % 2 == 1)
+        compute_between_equal_elements(cell, neighbor, direction, weights);
+      else
+        compute_between_equal_elements(neighbor, cell, direction, weights);
       if (keep && next_to_walls)
         keep_face(element_dofs);
       action(matrix, schur, element_dofs);
@@ -103,40 +178,41 @@ namespace vefs
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && elements.location(cell) == Location::cut)
-        for (const unsigned int f : cell->face_indices())
-          {
-            if (cell->at_boundary(f))
+        {
+          if (elements.on_parent(cell))
+            {
+              // A parent's element once, through one of its cells, face by
+              // face of the parent: the faces between its children are
+              // within the element.
+              if (!elements.represents_family(cell))
+                continue;
+              const auto parent = cell->parent();
+              for (const unsigned int f : parent->face_indices())
+                {
+                  if (parent->at_boundary(f))
+                    continue;
+                  const unsigned int direction = f / 2;
+                  const auto         side = parent->child((f % 2) << direction);
+                  if (between_equal_elements(side, f))
+                    visit_between_equal(side, f);
+                  else
+                    for (unsigned int child = 0; child < parent->n_children();
+                         ++child)
+                      if (((child >> direction) & 1) == f % 2)
+                        visit_fine_face(parent->child(child), f);
+                }
               continue;
-            if (cell->face(f)->has_children())
-              {
-                const unsigned int neighbor_face = cell->neighbor_face_no(f);
-                for (unsigned int s = 0; s < cell->face(f)->n_children(); ++s)
-                  visit(cell,
-                        f,
-                        s,
-                        cell->neighbor_child_on_subface(f, s),
-                        neighbor_face,
-                        numbers::invalid_unsigned_int);
-              }
-            else if (cell->neighbor_is_coarser(f))
-              {
-                const auto [neighbor_face, neighbor_subface] =
-                  cell->neighbor_of_coarser_neighbor(f);
-                visit(cell,
-                      f,
-                      numbers::invalid_unsigned_int,
-                      cell->neighbor(f),
-                      neighbor_face,
-                      neighbor_subface);
-              }
-            else
-              visit(cell,
-                    f,
-                    numbers::invalid_unsigned_int,
-                    cell->neighbor(f),
-                    cell->neighbor_of_neighbor(f),
-                    numbers::invalid_unsigned_int);
-          }
+            }
+          for (const unsigned int f : cell->face_indices())
+            {
+              if (cell->at_boundary(f))
+                continue;
+              if (between_equal_elements(cell, f))
+                visit_between_equal(cell, f);
+              else
+                visit_fine_face(cell, f);
+            }
+        }
     if (keep)
       wall_faces_kept = true;
   }
@@ -288,6 +364,113 @@ namespace vefs
         else
           expansion[k].emplace_back(index_of(interface_dofs[k], c), 1.);
       }
+  }
+
+  template <int dim>
+  bool
+  GhostPenalty<dim>::between_equal_elements(
+    const typename DoFHandler<dim>::cell_iterator &cell,
+    const unsigned int                             f) const
+  {
+    const auto element  = elements.element(cell);
+    const auto neighbor = cell->neighbor(f);
+    // The neighbour's element: itself if it is active or a parent whose
+    // children are on it.
+    if (neighbor->has_children() && !elements.on_parent(neighbor->child(0)))
+      return false;
+    const typename FlowElements<dim>::CellIterator neighbor_element =
+      neighbor->has_children()
+        ? typename FlowElements<dim>::CellIterator(neighbor)
+        : elements.element(neighbor);
+    if (neighbor_element->level() != element->level())
+      return false;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (std::abs(neighbor_element->extent_in_direction(d) -
+                   element->extent_in_direction(d)) >
+          1e-10 * element->extent_in_direction(d))
+        return false;
+    return true;
+  }
+
+  template <int dim>
+  void
+  GhostPenalty<dim>::compute_between_equal_elements(
+    const typename DoFHandler<dim>::cell_iterator &lower,
+    const typename DoFHandler<dim>::cell_iterator &upper,
+    const unsigned int                             direction,
+    const Weights                                 &weights)
+  {
+    constexpr unsigned int n_face_vertices = 1u << (dim - 1);
+    const unsigned int     n_components    = flow_fe.n_components();
+    const unsigned int     n               = 3 * n_face_vertices * n_components;
+    // The vertex of a cell with @p bit in the face's direction and the
+    // other directions' bits @p t.
+    const auto vertex = [direction](const unsigned int t,
+                                    const unsigned int bit) {
+      return (t & ((1u << direction) - 1)) | (bit << direction) |
+             ((t >> direction) << (direction + 1));
+    };
+    const auto dof = [&](const typename DoFHandler<dim>::cell_iterator &side,
+                         const unsigned int                             v,
+                         const unsigned int                             c) {
+      return elements.on_parent(side)
+               ? elements.parent_vertex_dof(side, v, c)
+               : side->vertex_dof_index(v, c, side->active_fe_index());
+    };
+    // By component, then the layers of vertices (the lower element's far
+    // one, the face, the upper element's far one), then the face's vertex.
+    element_dofs.resize(n);
+    component.resize(n);
+    for (unsigned int c = 0; c < n_components; ++c)
+      for (unsigned int t = 0; t < n_face_vertices; ++t)
+        {
+          const unsigned int i                  = c * 3 * n_face_vertices + t;
+          element_dofs[i]                       = dof(lower, vertex(t, 0), c);
+          element_dofs[i + n_face_vertices]     = dof(lower, vertex(t, 1), c);
+          element_dofs[i + 2 * n_face_vertices] = dof(upper, vertex(t, 1), c);
+          for (unsigned int layer = 0; layer < 3; ++layer)
+            component[i + layer * n_face_vertices] = c;
+        }
+
+    const auto                  element = elements.element(lower);
+    const double                h = element->extent_in_direction(direction);
+    const std::array<double, 3> difference = {{-1. / h, 2. / h, -1. / h}};
+    // The Q1 mass matrix of the face, a product over its directions.
+    FullMatrix<double> face_mass(n_face_vertices, n_face_vertices);
+    for (unsigned int t = 0; t < n_face_vertices; ++t)
+      for (unsigned int u = 0; u < n_face_vertices; ++u)
+        {
+          double mass = 1;
+          for (unsigned int j = 0, d = 0; d < dim; ++d)
+            if (d != direction)
+              {
+                const bool same = ((t >> j) & 1) == ((u >> j) & 1);
+                mass *=
+                  element->extent_in_direction(d) * (same ? 1. / 3 : 1. / 6);
+                ++j;
+              }
+          face_mass(t, u) = mass;
+        }
+    matrix.reinit(n, n);
+    schur.reinit(n, n);
+    for (unsigned int c = 0; c < n_components; ++c)
+      for (unsigned int a = 0; a < 3; ++a)
+        for (unsigned int b = 0; b < 3; ++b)
+          for (unsigned int t = 0; t < n_face_vertices; ++t)
+            for (unsigned int u = 0; u < n_face_vertices; ++u)
+              {
+                const unsigned int i = (c * 3 + a) * n_face_vertices + t;
+                const unsigned int j = (c * 3 + b) * n_face_vertices + u;
+                const double       value =
+                  difference[a] * difference[b] * face_mass(t, u);
+                if (c < dim)
+                  matrix(i, j) = weights.velocity * value;
+                else
+                  {
+                    matrix(i, j) = -weights.pressure * value;
+                    schur(i, j)  = weights.schur * value;
+                  }
+              }
   }
 
   template <int dim>

@@ -259,8 +259,8 @@ namespace vefs
     // adds: a parent's element couples its vertices' unknowns once (through
     // the constraints of the children it took 4 % of a step at 2.5 mm), the
     // interpolated unknowns of its children keep their diagonal.
-    BlockDynamicSparsityPattern pattern(touched_partitioning);
-    const FiniteElement<dim>   &fe = fe_collection[liquid_index];
+    BlockDynamicSparsityPattern          pattern(touched_partitioning);
+    const FiniteElement<dim>            &fe = fe_collection[liquid_index];
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index)
@@ -456,10 +456,12 @@ namespace vefs
         {
           local.compute(cell);
           cell->get_dof_indices(dof_indices);
-          local.apply_pressure_mass_floor(local.pressure_mass,
-                                          cell->measure());
-          assembly.distribute_local_to_global(
-            local.matrix, local.rhs, dof_indices, system_matrix, system_rhs);
+          local.apply_pressure_mass_floor(local.pressure_mass, cell->measure());
+          assembly.distribute_local_to_global(local.matrix,
+                                              local.rhs,
+                                              dof_indices,
+                                              system_matrix,
+                                              system_rhs);
           assembly.distribute_local_to_global(local.schur,
                                               dof_indices,
                                               schur_matrix);
@@ -473,12 +475,12 @@ namespace vefs
           // A parent's element: its children's systems summed in the
           // parent's unknowns, then added once (the same sums as through
           // the interpolation constraints, without expanding every entry).
-          parent_matrix        = 0;
-          parent_schur         = 0;
-          parent_rhs           = 0;
-          parent_pressure_mass = 0;
-          bool      any_liquid = false;
-          const auto parent    = cell->parent();
+          parent_matrix         = 0;
+          parent_schur          = 0;
+          parent_rhs            = 0;
+          parent_pressure_mass  = 0;
+          bool       any_liquid = false;
+          const auto parent     = cell->parent();
           for (unsigned int child = 0; child < parent->n_children(); ++child)
             {
               const auto sibling = parent->child(child);

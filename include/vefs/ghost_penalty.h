@@ -121,6 +121,34 @@ namespace vefs
     compute(const Weights &weights);
 
     /**
+     * Whether the face @p f of @p cell (on its element's boundary) lies
+     * between two flow elements of the same size: the elements of the band
+     * are (with parents, two parents or a parent and a cell of the parents'
+     * level; else two cells of one level).
+     */
+    bool
+    between_equal_elements(const typename DoFHandler<dim>::cell_iterator &cell,
+                           const unsigned int f) const;
+
+    /**
+     * The whole face between the elements of @p lower and @p upper (cells
+     * of each, adjacent across the face, @p upper beyond @p lower in
+     * direction @p direction), elements of the same size: element_dofs,
+     * component, and the matrices in closed form. For Q1 on boxes the jump
+     * of the normal derivative at the face is the second difference of the
+     * three layers of vertices, (-1, 2, -1) / h_d, times the Q1 face
+     * interpolant, so each component's matrix is that difference's outer
+     * product times the face's Q1 mass matrix; no quadrature, and one face
+     * of a parent instead of its children's quarters.
+     */
+    void
+    compute_between_equal_elements(
+      const typename DoFHandler<dim>::cell_iterator &lower,
+      const typename DoFHandler<dim>::cell_iterator &upper,
+      const unsigned int                             direction,
+      const Weights                                 &weights);
+
+    /**
      * A face's matrices as compute() made them: row by row the entries
      * that couple a component with itself (the others are zero), and of the
      * Schur matrix those of the pressure.
