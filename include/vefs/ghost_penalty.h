@@ -56,9 +56,11 @@ namespace vefs
      * Call @p action for every face of a locally owned cell whose flow
      * element (FlowElements, classified) is cut, with liquid in the element
      * on the other side, once: a face between two cut elements is visited
-     * from the cell with the smaller CellId (which may be on another rank)
-     * and carries half the penalty of each side; faces within an element
-     * are not visited. With @p matrices_wanted false the
+     * from the side with the smaller CellId (which may be on another rank;
+     * the elements' CellIds where the two elements have the same size, and
+     * then the whole face at once) and carries half the penalty of each
+     * side; faces within an element are not visited. With @p
+     * matrices_wanted false the
      * matrices are empty and @p action is called once per component with
      * the dofs of that component on both cells, sorted: for the sparsity
      * pattern (the penalty couples each component with itself only).
@@ -122,9 +124,9 @@ namespace vefs
 
     /**
      * Whether the face @p f of @p cell (on its element's boundary) lies
-     * between two flow elements of the same size: the elements of the band
-     * are (with parents, two parents or a parent and a cell of the parents'
-     * level; else two cells of one level).
+     * between two flow elements of the same size, as every face in the band
+     * does: with parents, two parents or a parent and a cell of the
+     * parents' level; else two cells of one level.
      */
     bool
     between_equal_elements(const typename DoFHandler<dim>::cell_iterator &cell,
