@@ -66,6 +66,14 @@ namespace vefs
           action(matrix, schur, dofs);
         }
     };
+    // Between two cut cells each side weighs in with half the penalty and
+    // its own h.
+    const auto weights_of_face =
+      [&](const auto &cell, const auto &neighbor, const bool neighbor_is_cut) {
+        return neighbor_is_cut ? face_weights(elements.size(cell), 0.5) +
+                                   face_weights(elements.size(neighbor), 0.5)
+                               : face_weights(elements.size(cell), 1.);
+      };
     const auto visit = [&](const auto        &cell,
                            const unsigned int face,
                            const unsigned int subface,
@@ -93,12 +101,7 @@ namespace vefs
       interface_values
         .reinit(cell, face, subface, neighbor, neighbor_face, neighbor_subface);
       expand_to_elements(cell, neighbor);
-      // Between two cut cells each side weighs in with half the penalty
-      // and its own h.
-      const Weights weights = neighbor_is_cut
-                                ? face_weights(elements.size(cell), 0.5) +
-                                    face_weights(elements.size(neighbor), 0.5)
-                                : face_weights(elements.size(cell), 1.);
+      const Weights weights = weights_of_face(cell, neighbor, neighbor_is_cut);
       compute(weights);
       if (keep && next_to_walls)
         keep_face(element_dofs);
@@ -163,10 +166,7 @@ namespace vefs
           add_to_pattern(cell, neighbor);
           return;
         }
-      const Weights weights = neighbor_is_cut
-                                ? face_weights(elements.size(cell), 0.5) +
-                                    face_weights(elements.size(neighbor), 0.5)
-                                : face_weights(elements.size(cell), 1.);
+      const Weights weights = weights_of_face(cell, neighbor, neighbor_is_cut);
       if (f % 2 == 1)
         compute_between_equal_elements(cell, neighbor, direction, weights);
       else
