@@ -528,8 +528,14 @@ namespace vefs
 
     typename TransportedFields<dim>::VectorType predicted;
     fields.initialize_vector(predicted);
+    // As in the advection: only a foot beyond a contact wall is outside the
+    // liquid by its distance. (Taking the larger of the two everywhere set
+    // psi = 0 at every liquid node, and the band was refined over the whole
+    // liquid before each advection.)
     for (unsigned int i = 0; i < nodes.size(); ++i)
-      predicted(nodes[i].dofs[c]) = std::max(at_feet[i][c], beyond_contact[i]);
+      predicted(nodes[i].dofs[c]) =
+        beyond_contact[i] > 0 ? std::max(at_feet[i][c], beyond_contact[i])
+                              : at_feet[i][c];
     predicted.update_ghost_values();
     fields.distribute_constraints(predicted);
     predicted.update_ghost_values();
