@@ -319,7 +319,9 @@ namespace vefs
              "...: mean velocity of the liquid; total_energy: kinetic + "
              "potential + elastic; coarse_surface_cells: cells crossed by "
              "the surface right after the advection that are coarser than "
-             "the finest level (0 if the band kept up with the surface).\n"
+             "the finest level (0 if the band kept up with the surface); "
+             "advected_cells ('Band placement = predicted' only): cells of "
+             "the mesh the advection ran on.\n"
           << column_header() << '\n';
         header_written = true;
       }

@@ -115,6 +115,10 @@ namespace vefs
                                      return s.contact_measure;
                                    });
       }
+    if (parameters.band_predicted)
+      statistics_file.add_column("advected_cells", [](const auto &s) {
+        return s.advected_cells;
+      });
     if (!parameters.probe_point.empty())
       for (unsigned int d = 0; d < dim; ++d)
         statistics_file.add_column(std::string("probe_u_") + "xyz"[d],
@@ -499,6 +503,7 @@ namespace vefs
                                     levels.max_level - levels.min_level,
                                     parameters.level_set_interpolation,
                                     surface_ahead);
+            statistics.advected_cells = triangulation.n_global_active_cells();
           }
         bool remap = true;
         {

@@ -51,9 +51,14 @@ namespace vefs
      * at the finest level (count_coarse_surface_cells()).
      */
     unsigned int coarse_surface_cells = 0;
-    unsigned int dofs                 = 0;
-    unsigned int linear_iterations    = 0;
-    double       wall_time            = 0;
+    /**
+     * With 'Band placement = predicted': cells of the mesh the advection
+     * ran on (refined ahead of the surface).
+     */
+    unsigned int advected_cells    = 0;
+    unsigned int dofs              = 0;
+    unsigned int linear_iterations = 0;
+    double       wall_time         = 0;
     /**
      * Only with an exact final shape: the L1 shape error (at the end time,
      * NaN before) and the surface thickness.
