@@ -529,9 +529,9 @@ namespace vefs
     typename TransportedFields<dim>::VectorType predicted;
     fields.initialize_vector(predicted);
     // As in the advection: only a foot beyond a contact wall is outside the
-    // liquid by its distance. (Taking the larger of the two everywhere set
-    // psi = 0 at every liquid node, and the band was refined over the whole
-    // liquid before each advection.)
+    // liquid by its distance. Elsewhere that distance is 0, and taking it
+    // would lift psi to 0 in all the liquid: every liquid cell would look
+    // cut and be refined before the advection.
     for (unsigned int i = 0; i < nodes.size(); ++i)
       predicted(nodes[i].dofs[c]) =
         beyond_contact[i] > 0 ? std::max(at_feet[i][c], beyond_contact[i])
