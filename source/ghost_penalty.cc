@@ -74,6 +74,20 @@ namespace vefs
                                    face_weights(elements.size(neighbor), 0.5)
                                : face_weights(elements.size(cell), 1.);
       };
+    // Whether this side adds the face to @p neighbor: liquid beyond, a face
+    // of the kind asked for, and a face between two cut cells, seen from
+    // both, belongs to the side with the smaller CellId (of the cells, or
+    // of the elements), on whichever rank owns that side.
+    const auto claims_face = [&](const bool    next_to_walls,
+                                 const auto   &neighbor,
+                                 const CellId &own_id,
+                                 const CellId &neighbor_id) {
+      if (!elements.has_liquid(neighbor) ||
+          (faces == Faces::next_to_walls && !next_to_walls))
+        return false;
+      return !(elements.location(neighbor) == Location::cut &&
+               neighbor_id < own_id);
+    };
     const auto visit = [&](const auto        &cell,
                            const unsigned int face,
                            const unsigned int subface,
@@ -84,15 +98,10 @@ namespace vefs
       // not jump.
       const bool next_to_walls = elements.element(cell)->at_boundary() ||
                                  elements.element(neighbor)->at_boundary();
-      if (!elements.has_liquid(neighbor) ||
-          elements.same_element(cell, neighbor) ||
-          (faces == Faces::next_to_walls && !next_to_walls))
+      if (elements.same_element(cell, neighbor) ||
+          !claims_face(next_to_walls, neighbor, cell->id(), neighbor->id()))
         return;
-      // A face between two cut cells is seen from both: it belongs to the
-      // side with the smaller CellId, on whichever rank owns that side.
       const bool neighbor_is_cut = elements.location(neighbor) == Location::cut;
-      if (neighbor_is_cut && neighbor->id() < cell->id())
-        return;
       if (!matrices_wanted)
         {
           add_to_pattern(cell, neighbor);
@@ -155,12 +164,12 @@ namespace vefs
       const auto neighbor_element = elements.element(neighbor);
       const bool next_to_walls =
         element->at_boundary() || neighbor_element->at_boundary();
-      if (!elements.has_liquid(neighbor) ||
-          (faces == Faces::next_to_walls && !next_to_walls))
+      if (!claims_face(next_to_walls,
+                       neighbor,
+                       element->id(),
+                       neighbor_element->id()))
         return;
       const bool neighbor_is_cut = elements.location(neighbor) == Location::cut;
-      if (neighbor_is_cut && neighbor_element->id() < element->id())
-        return;
       if (!matrices_wanted)
         {
           add_to_pattern(cell, neighbor);

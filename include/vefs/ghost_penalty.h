@@ -59,11 +59,11 @@ namespace vefs
      * from the side with the smaller CellId (which may be on another rank;
      * the elements' CellIds where the two elements have the same size, and
      * then the whole face at once) and carries half the penalty of each
-     * side; faces within an element are not visited. With @p
-     * matrices_wanted false the
-     * matrices are empty and @p action is called once per component with
-     * the dofs of that component on both cells, sorted: for the sparsity
-     * pattern (the penalty couples each component with itself only).
+     * side; faces within an element are not visited. With
+     * @p matrices_wanted false the matrices are empty and @p action is
+     * called once per component with the dofs of that component on both
+     * cells, sorted: for the sparsity pattern (the penalty couples each
+     * component with itself only).
      * @p faces may restrict the visit to faces next to the walls.
      *
      * A first visit of all faces with matrices keeps those of the faces
