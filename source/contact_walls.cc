@@ -79,6 +79,7 @@ namespace vefs
   {
     const MPI_Comm comm = dof_handler.get_triangulation().get_communicator();
     wall_unknowns.clear();
+    any_wall_unknowns = false;
     in_contact.reinit(owned, relevant, comm);
     this->touched = touched;
     if (walls.empty())
@@ -101,6 +102,8 @@ namespace vefs
                                           cell->face(f)->vertex(v)};
                 }
             }
+    any_wall_unknowns =
+      Utilities::MPI::logical_or(!wall_unknowns.empty(), comm);
 
     // Where the last step ended released (from every rank: the partition
     // has changed since), the liquid is likely to leave the wall again.

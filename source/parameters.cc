@@ -530,6 +530,16 @@ namespace vefs
                         "1e-8",
                         Patterns::Double(0, 1),
                         "Relative residual reduction of the Krylov solver.");
+      prm.declare_entry(
+        "Contact tolerance",
+        "1e-4",
+        Patterns::Double(0, 1),
+        "With contact walls: the relative residual reduction of the solves "
+        "while the contact set still changes. They only have to tell which "
+        "nodes touch; once a solve leaves the set unchanged the step is "
+        "solved again, from there, to 'Tolerance' (and the set checked "
+        "again). At or below 'Tolerance': every contact iteration is solved "
+        "fully.");
       prm.declare_entry("Maximum iterations",
                         "1000",
                         Patterns::Integer(1),
@@ -787,6 +797,7 @@ namespace vefs
 
     prm.enter_subsection("Solver");
     solver_tolerance           = prm.get_double("Tolerance");
+    contact_solver_tolerance   = prm.get_double("Contact tolerance");
     solver_max_iterations      = prm.get_integer("Maximum iterations");
     pressure_stabilization     = prm.get_double("Pressure stabilization");
     ghost_penalty              = prm.get_double("Ghost penalty");

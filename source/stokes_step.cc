@@ -683,7 +683,7 @@ namespace vefs
 
   template <int dim>
   unsigned int
-  StokesStep<dim>::solve()
+  StokesStep<dim>::solve(const double tolerance)
   {
     Assert(step_systems, ExcMessage("solve() after assemble()."));
     StepSystems &systems           = *step_systems;
@@ -724,8 +724,7 @@ namespace vefs
                         "finite; check 'Gravity', 'Material/Density', the "
                         "'Walls' velocities and 'Time/Time step'");
     SolverControl             control(parameters.solver_max_iterations,
-                          std::max(parameters.solver_tolerance * rhs_norm,
-                                   1e-300));
+                          std::max(tolerance * rhs_norm, 1e-300));
     SolverFGMRES<BlockVector> solver(control,
                                      SolverFGMRES<BlockVector>::AdditionalData(
                                        100));
@@ -741,7 +740,11 @@ namespace vefs
                 << "the Stokes solver did not converge: residual "
                 << failure.last_residual << " after " << failure.last_step
                 << " iterations (tolerance " << control.tolerance()
-                << " = 'Solver/Tolerance' times the right-hand side norm). "
+                << " = 'Solver/"
+                << (tolerance == parameters.solver_tolerance
+                      ? "Tolerance"
+                      : "Contact tolerance")
+                << "' times the right-hand side norm). "
                 << "Reduce 'Time/Time step' or raise 'Solver/Maximum "
                 << "iterations'.";
         throw SolverError(message.str());

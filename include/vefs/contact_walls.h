@@ -41,6 +41,13 @@ namespace vefs
       return walls.empty();
     }
 
+    /** Whether liquid touches a contact wall on any rank (after reset()). */
+    bool
+    has_wall_unknowns() const
+    {
+      return any_wall_unknowns;
+    }
+
     /**
      * After the flow unknowns are distributed: find the degrees of freedom
      * normal to contact walls on liquid cells, but those that
@@ -122,6 +129,8 @@ namespace vefs
     };
     /** The locally relevant ones, by degree of freedom. */
     std::map<types::global_dof_index, WallUnknown> wall_unknowns;
+    /** wall_unknowns is not empty on some rank. */
+    bool any_wall_unknowns = false;
     /** A row of the velocity unknown (blocks (0,0) and (0,1)). */
     struct KeptRow
     {

@@ -184,7 +184,9 @@ namespace vefs
     /** The stress at the feet by limited cubic ('Stress interpolation'). */
     bool cubic_stress_interpolation;
 
-    double       solver_tolerance;
+    double solver_tolerance;
+    /** Of the solves while the contact set changes ('Contact tolerance'). */
+    double       contact_solver_tolerance;
     unsigned int solver_max_iterations;
     double       pressure_stabilization;
     double       ghost_penalty;

@@ -66,9 +66,13 @@ namespace vefs
     void
     build_preconditioner();
 
-    /** Returns the number of Krylov iterations; throws SolverError. */
+    /**
+     * Solve to the relative residual @p tolerance, from the last solution
+     * if this is a contact iteration. Returns the number of Krylov
+     * iterations; throws SolverError.
+     */
     unsigned int
-    solve();
+    solve(const double tolerance);
 
     /**
      * With contact walls: update the contact set from the last solution
@@ -83,6 +87,13 @@ namespace vefs
     has_contact_walls() const
     {
       return !contact.empty();
+    }
+
+    /** Whether liquid touches a contact wall this step (after setup()). */
+    bool
+    touches_contact_walls() const
+    {
+      return contact.has_wall_unknowns();
     }
 
     /** Normal force of the contact walls on the liquid (N; N/m in 2D). */
