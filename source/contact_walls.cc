@@ -120,13 +120,12 @@ namespace vefs
 
   template <int dim>
   void
-  ContactWalls<dim>::add_constraints(
-    AffineConstraints<double> &constraints) const
+  ContactWalls<dim>::set_zero(BlockVector &vector) const
   {
-    for (const auto &entry : wall_unknowns)
-      if (in_contact(entry.first) == 1 &&
-          !constraints.is_constrained(entry.first))
-        constraints.add_line(entry.first);
+    for (const auto &[row, kept] : kept_rows)
+      if (kept.imposed)
+        vector.block(0)(row) = 0;
+    vector.compress(VectorOperation::insert);
   }
 
   template <int dim>

@@ -170,9 +170,7 @@ namespace vefs
                   touched_partitioning[0],
                   liquid_index,
                   interpolation);
-    make_constraints(constraints, true);
-    if (!contact.empty())
-      make_constraints(constraints_without_contact, false);
+    make_constraints();
     make_matrices();
   }
 
@@ -218,8 +216,7 @@ namespace vefs
 
   template <int dim>
   void
-  StokesStep<dim>::make_constraints(AffineConstraints<double> &constraints,
-                                    const bool with_contact) const
+  StokesStep<dim>::make_constraints()
   {
     // The flow's space first: the interpolation in the cells on their
     // parent, then what constrains the space's own unknowns.
@@ -234,8 +231,6 @@ namespace vefs
                                              constraints);
     make_wall_constraints(constraints);
     make_far_parent_wall_constraints(constraints);
-    if (with_contact)
-      contact.add_constraints(constraints);
     // A periodic pair may be split between ranks, and the walls it meets
     // constrain the same nodes: each rank must know the constraints of the
     // other side. (Several ranks allow one periodic pair only.)
@@ -251,8 +246,7 @@ namespace vefs
   void
   StokesStep<dim>::make_matrices()
   {
-    const AffineConstraints<double> &pattern_constraints =
-      assembly_constraints();
+    const AffineConstraints<double> &pattern_constraints = constraints;
     // Built in deal.II's pattern and handed to Epetra once: inserting the
     // entries of each cell and face into Epetra's graph one by one took most
     // of the setup of the 3D ball. The entries are those the assembly
@@ -441,7 +435,7 @@ namespace vefs
     lumped_pressure_mass = 0;
 
     StepSystems                         &systems = systems_of_step(fields, tau);
-    const AffineConstraints<double>     &assembly = assembly_constraints();
+    const AffineConstraints<double>     &assembly = constraints;
     StokesCellSystem<dim>               &local    = systems.cells;
     std::vector<types::global_dof_index> dof_indices(
       fe_collection[liquid_index].n_dofs_per_cell());
@@ -716,6 +710,7 @@ namespace vefs
         distributed.compress(VectorOperation::insert);
       }
     constraints.set_zero(distributed);
+    contact.set_zero(distributed);
     const double rhs_norm = system_rhs.l2_norm();
     // An overflowing right-hand side would make the tolerance infinite and
     // the zero vector a "converged" solution.
@@ -749,6 +744,9 @@ namespace vefs
                 << "iterations'.";
         throw SolverError(message.str());
       }
+    // The rows in contact hold u.n = 0 to the solver's tolerance: exactly,
+    // before the constraints that interpolate from them.
+    contact.set_zero(distributed);
     constraints.distribute(distributed);
     if (!std::isfinite(distributed.l2_norm()))
       throw SolverError("the Stokes solution is not finite; check "
@@ -774,7 +772,6 @@ namespace vefs
                         elements,
                         interpolation))
       return false;
-    make_constraints(constraints, true);
     contact.impose(system_matrix, system_rhs);
     return true;
   }

@@ -64,9 +64,12 @@ namespace vefs
           const unsigned int               liquid_index,
           const AffineConstraints<double> &interpolation);
 
-    /** u.n = 0 at the degrees of freedom in contact. */
+    /**
+     * Set the owned unknowns whose rows hold the contact (u.n = 0) to zero
+     * in @p vector (of the flow's blocks, not ghosted).
+     */
     void
-    add_constraints(AffineConstraints<double> &constraints) const;
+    set_zero(BlockVector &vector) const;
     /**
      * Keep the rows of the owned contact unknowns of @p matrix and
      * @p rhs, assembled without the contact constraints (unknowns that

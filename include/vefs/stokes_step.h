@@ -169,11 +169,9 @@ namespace vefs
     void
     check_periodic_liquid() const;
 
-    /** Hanging-node, periodic, wall and (@p with_contact) contact
-     * constraints. */
+    /** The constraints of the step but the contact set. */
     void
-    make_constraints(AffineConstraints<double> &constraints,
-                     const bool                 with_contact) const;
+    make_constraints();
 
     /** Sparsity patterns, matrices and vectors for the current dofs. */
     void
@@ -193,20 +191,13 @@ namespace vefs
      */
     IndexSet              touched_dofs;
     std::vector<IndexSet> touched_partitioning;
-    /** All constraints, contact included: those of the solution. */
-    AffineConstraints<double> constraints;
     /**
-     * With contact walls, the others: the matrix is assembled with these,
-     * and ContactWalls imposes the contact set on its rows, so that a
-     * contact iteration needs no assembly.
+     * Hanging-node, periodic, wall and (with 'Flow cells = parents') the
+     * interpolation constraints; not the contact set, which ContactWalls
+     * imposes on the matrix rows, so that a contact iteration needs neither
+     * an assembly nor new constraints.
      */
-    AffineConstraints<double> constraints_without_contact;
-
-    const AffineConstraints<double> &
-    assembly_constraints() const
-    {
-      return contact.empty() ? constraints : constraints_without_contact;
-    }
+    AffineConstraints<double>                     constraints;
     std::array<std::unique_ptr<Function<dim>>, 6> wall_velocity;
 
     TrilinosWrappers::BlockSparseMatrix system_matrix;
