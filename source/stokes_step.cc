@@ -246,7 +246,6 @@ namespace vefs
   void
   StokesStep<dim>::make_matrices()
   {
-    const AffineConstraints<double> &pattern_constraints = constraints;
     // Built in deal.II's pattern and handed to Epetra once: inserting the
     // entries of each cell and face into Epetra's graph one by one took most
     // of the setup of the 3D ball. The entries are those the assembly
@@ -285,7 +284,7 @@ namespace vefs
                   dofs[i] = elements.parent_vertex_dof(cell, vertex, component);
                 }
             }
-          pattern_constraints.add_entries_local_to_global(dofs, pattern, false);
+          constraints.add_entries_local_to_global(dofs, pattern, false);
         }
     // The ghost penalty couples the two cells of a face.
     GhostPenalty<dim> ghost_penalty(parameters,
@@ -297,7 +296,7 @@ namespace vefs
       dof_handler,
       false,
       [&](const auto &, const auto &, const auto &dofs) {
-        pattern_constraints.add_entries_local_to_global(dofs, pattern, false);
+        constraints.add_entries_local_to_global(dofs, pattern, false);
       });
     SparsityTools::distribute_sparsity_pattern(pattern,
                                                dof_handler.locally_owned_dofs(),
@@ -313,7 +312,7 @@ namespace vefs
     for (const auto &entry : pattern.block(1, 1))
       schur_pattern.block(1, 1).add(entry.row(), entry.column());
     for (const auto i : touched_partitioning[0])
-      if (pattern_constraints.is_constrained(i))
+      if (constraints.is_constrained(i))
         schur_pattern.block(0, 0).add(i, i);
     schur_matrix.clear();
     schur_matrix.reinit(owned_partitioning, schur_pattern, comm);
@@ -435,8 +434,7 @@ namespace vefs
     lumped_pressure_mass = 0;
 
     StepSystems                         &systems = systems_of_step(fields, tau);
-    const AffineConstraints<double>     &assembly = constraints;
-    StokesCellSystem<dim>               &local    = systems.cells;
+    StokesCellSystem<dim>               &local   = systems.cells;
     std::vector<types::global_dof_index> dof_indices(
       fe_collection[liquid_index].n_dofs_per_cell());
 
@@ -451,17 +449,17 @@ namespace vefs
           local.compute(cell);
           cell->get_dof_indices(dof_indices);
           local.apply_pressure_mass_floor(local.pressure_mass, cell->measure());
-          assembly.distribute_local_to_global(local.matrix,
-                                              local.rhs,
-                                              dof_indices,
-                                              system_matrix,
-                                              system_rhs);
-          assembly.distribute_local_to_global(local.schur,
-                                              dof_indices,
-                                              schur_matrix);
-          assembly.distribute_local_to_global(local.pressure_mass,
-                                              dof_indices,
-                                              lumped_pressure_mass);
+          constraints.distribute_local_to_global(local.matrix,
+                                                 local.rhs,
+                                                 dof_indices,
+                                                 system_matrix,
+                                                 system_rhs);
+          constraints.distribute_local_to_global(local.schur,
+                                                 dof_indices,
+                                                 schur_matrix);
+          constraints.distribute_local_to_global(local.pressure_mass,
+                                                 dof_indices,
+                                                 lumped_pressure_mass);
         }
       else if (cell->is_locally_owned() && elements.on_parent(cell) &&
                elements.represents_family(cell))
@@ -526,17 +524,17 @@ namespace vefs
             }
           local.apply_pressure_mass_floor(parent_pressure_mass,
                                           parent->measure());
-          assembly.distribute_local_to_global(parent_matrix,
-                                              parent_rhs,
-                                              dof_indices,
-                                              system_matrix,
-                                              system_rhs);
-          assembly.distribute_local_to_global(parent_schur,
-                                              dof_indices,
-                                              schur_matrix);
-          assembly.distribute_local_to_global(parent_pressure_mass,
-                                              dof_indices,
-                                              lumped_pressure_mass);
+          constraints.distribute_local_to_global(parent_matrix,
+                                                 parent_rhs,
+                                                 dof_indices,
+                                                 system_matrix,
+                                                 system_rhs);
+          constraints.distribute_local_to_global(parent_schur,
+                                                 dof_indices,
+                                                 schur_matrix);
+          constraints.distribute_local_to_global(parent_pressure_mass,
+                                                 dof_indices,
+                                                 lumped_pressure_mass);
         }
 
     Vector<double> zero_rhs;
@@ -552,11 +550,11 @@ namespace vefs
       [&](const auto &matrix, const auto &schur, const auto &dofs) {
         // Through the right-hand side, so that wall velocities act.
         zero_rhs.reinit(dofs.size());
-        assembly.distribute_local_to_global(matrix,
-                                            zero_rhs,
-                                            dofs,
-                                            system_matrix,
-                                            system_rhs);
+        constraints.distribute_local_to_global(matrix,
+                                               zero_rhs,
+                                               dofs,
+                                               system_matrix,
+                                               system_rhs);
         pressure_dofs.clear();
         pressure_rows.clear();
         for (unsigned int i = 0; i < dofs.size(); ++i)
@@ -569,16 +567,16 @@ namespace vefs
         pressure_schur.extract_submatrix_from(schur,
                                               pressure_rows,
                                               pressure_rows);
-        assembly.distribute_local_to_global(pressure_schur,
-                                            pressure_dofs,
-                                            schur_matrix);
+        constraints.distribute_local_to_global(pressure_schur,
+                                               pressure_dofs,
+                                               schur_matrix);
       });
     system_matrix.compress(VectorOperation::add);
     schur_matrix.compress(VectorOperation::add);
     system_rhs.compress(VectorOperation::add);
     lumped_pressure_mass.compress(VectorOperation::add);
     if (!contact.empty())
-      contact.keep_rows(system_matrix, system_rhs, assembly);
+      contact.keep_rows(system_matrix, system_rhs, constraints);
   }
 
   namespace
