@@ -13,8 +13,8 @@ namespace vefs
     : min_level(parameters.min_level)
     , bulk_level(parameters.bulk_level)
     , max_level(parameters.max_level)
-    , band_width(parameters.band_width)
     , band_predicted(parameters.band_predicted)
+    , band_width(parameters.band_width)
   {
     finest_cell_size = std::numeric_limits<double>::max();
     for (unsigned int d = 0; d < parameters.dimension; ++d)
@@ -30,9 +30,7 @@ namespace vefs
   {
     // The surface moves up to CFL finest cells per step: the band must be
     // wider than that or the surface leaves the fine region. Refined ahead of
-    // the surface, the band keeps its width, and a halo one level coarser
-    // covers where the surface can go, so that one refinement cycle brings
-    // the cells there to the finest level.
+    // the surface, the band keeps its width.
     reach_half_width =
       std::max<double>(band_width, std::ceil(cfl) + 2) * finest_cell_size;
     band_half_width =
@@ -42,7 +40,8 @@ namespace vefs
   unsigned int
   MeshLevels::target_level(const double psi_lowest,
                            const double psi_highest,
-                           const double slope) const
+                           const double slope,
+                           const double reach) const
   {
     const double distance =
       (psi_lowest <= 0 && psi_highest >= 0)
@@ -52,7 +51,7 @@ namespace vefs
     const unsigned int away = psi_highest < 0 ? bulk_level : min_level;
     if (distance <= band_half_width)
       return max_level;
-    if (distance <= reach_half_width)
+    if (distance <= reach)
       return std::max(away, std::max(max_level, 1u) - 1);
     return away;
   }
@@ -82,15 +81,12 @@ namespace vefs
       return gradient.norm();
     }
 
-    /**
-     * The target level of @p cell from the level set slot of @p level_set
-     * (a vector with the layout of the fields).
-     */
+    /** The lowest and highest of the level set slot of @p level_set. */
     template <int dim>
-    unsigned int
-    target_level(const MeshLevels                                  &levels,
-                 const typename TransportedFields<dim>::VectorType &level_set,
-                 const typename DoFHandler<dim>::active_cell_iterator &cell)
+    std::pair<double, double>
+    level_set_range(
+      const typename TransportedFields<dim>::VectorType    &level_set,
+      const typename DoFHandler<dim>::active_cell_iterator &cell)
     {
       constexpr unsigned int c = TransportedFields<dim>::level_set_component;
       double                 lowest  = std::numeric_limits<double>::max();
@@ -101,9 +97,95 @@ namespace vefs
           lowest           = std::min(lowest, psi);
           highest          = std::max(highest, psi);
         }
+      return {lowest, highest};
+    }
+
+    /**
+     * The target level of @p cell from the level set slot of @p level_set
+     * (a vector with the layout of the fields) and @p reach.
+     */
+    template <int dim>
+    unsigned int
+    target_level(const MeshLevels                                  &levels,
+                 const typename TransportedFields<dim>::VectorType &level_set,
+                 const typename DoFHandler<dim>::active_cell_iterator &cell,
+                 const double                                          reach)
+    {
+      const auto [lowest, highest] = level_set_range<dim>(level_set, cell);
       return levels.target_level(lowest,
                                  highest,
-                                 level_set_slope<dim>(level_set, cell));
+                                 level_set_slope<dim>(level_set, cell),
+                                 reach);
+    }
+
+    /**
+     * How far the surface moves at @p cell in the coming step: the largest
+     * change of the level set from @p psi to @p psi_ahead at its vertices.
+     */
+    template <int dim>
+    double
+    local_motion(const typename TransportedFields<dim>::VectorType &psi,
+                 const typename TransportedFields<dim>::VectorType &psi_ahead,
+                 const typename DoFHandler<dim>::active_cell_iterator &cell)
+    {
+      constexpr unsigned int c = TransportedFields<dim>::level_set_component;
+      double                 motion = 0;
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const auto dof = cell->vertex_dof_index(v, c);
+          motion = std::max(motion, std::abs(psi_ahead(dof) - psi(dof)));
+        }
+      return motion;
+    }
+
+    /**
+     * The levels @p cell may keep: it is refined below the first, coarsened
+     * above the second. Widened band: the target of the present surface.
+     * Refined ahead (@p surface_ahead given): the finer of the targets of the
+     * present surface (the band only) and the predicted one (the halo
+     * within the local motion). After the advection: anything from the
+     * band's target up to the halo's level within the CFL number's reach.
+     */
+    template <int dim>
+    std::pair<unsigned int, unsigned int>
+    allowed_levels(
+      const MeshLevels                                     &levels,
+      const TransportedFields<dim>                         &fields,
+      const typename TransportedFields<dim>::VectorType    *surface_ahead,
+      const typename DoFHandler<dim>::active_cell_iterator &cell)
+    {
+      if (!levels.band_predicted)
+        {
+          const unsigned int target =
+            target_level<dim>(levels,
+                              fields.fields,
+                              cell,
+                              levels.reach_half_width);
+          return {target, target};
+        }
+      if (surface_ahead)
+        {
+          const double reach_ahead =
+            local_motion<dim>(fields.fields, *surface_ahead, cell) +
+            2 * levels.finest_cell_size;
+          const unsigned int target =
+            std::max(target_level<dim>(levels,
+                                       fields.fields,
+                                       cell,
+                                       levels.band_half_width),
+                     target_level<dim>(levels,
+                                       *surface_ahead,
+                                       cell,
+                                       std::max(reach_ahead,
+                                                levels.band_half_width)));
+          return {target, target};
+        }
+      return {
+        target_level<dim>(levels, fields.fields, cell, levels.band_half_width),
+        target_level<dim>(levels,
+                          fields.fields,
+                          cell,
+                          levels.reach_half_width)};
     }
 
     /**
@@ -251,18 +333,14 @@ namespace vefs
               // Remembered for the partitioner (children inherit it): the
               // flow is solved on liquid cells only.
               cell->set_material_id(has_liquid ? liquid_material_id : 0);
-              unsigned int target =
-                target_level<dim>(levels, fields.fields, cell);
-              if (surface_ahead)
-                target =
-                  std::max(target,
-                           target_level<dim>(levels, *surface_ahead, cell));
+              const auto [lowest, highest] =
+                allowed_levels<dim>(levels, fields, surface_ahead, cell);
               const unsigned int level = cell->level();
-              if (level < target)
+              if (level < lowest)
                 {
                   cell->set_refine_flag();
                 }
-              else if (level > target)
+              else if (level > highest)
                 {
                   cell->set_coarsen_flag();
                 }

@@ -392,7 +392,10 @@ namespace vefs
         "predicted surface; the band stays 'Band width' cells wide at any "
         "CFL number, so large steps no longer fill the mesh with fine cells, "
         "at the cost of one more trace and a few more adaptation cycles per "
-        "step. Needs 'Remap distance = 0'.");
+        "step. Cells within a step's local motion of the predicted surface "
+        "(and two finest cells more) are brought one level below the finest, "
+        "so that the next step's refinement takes one cycle there. Needs "
+        "'Remap distance = 0'.");
       prm.declare_entry(
         "Flow cells",
         "finest",

@@ -22,8 +22,9 @@ namespace vefs
     /**
      * Widen the band for steps of @p cfl finest cells (at least the
      * parameter "Band width"): the surface must not leave it in one step.
-     * With 'Band placement = predicted' the band keeps its width, and
-     * the cells in reach of the surface are kept one level below the finest.
+     * With 'Band placement = predicted' the band keeps its width, and @p cfl
+     * says how far around the surface the adaptation after an advection
+     * keeps the cells the refinement ahead made one level below the finest.
      */
     void
     expect_cfl(const double cfl);
@@ -33,25 +34,34 @@ namespace vefs
      * @p psi_highest] and whose level set slope is @p slope. Where psi has
      * been stretched (slope above 1) psi underestimates the distance to the
      * surface by that factor, and the band is measured in psi / slope.
-     * Beyond the band but within the surface's reach: one level below the
-     * finest (at least the level away from the surface).
+     * Beyond the band but within @p reach of the surface: one level below
+     * the finest (at least the level away from the surface).
      */
     unsigned int
     target_level(const double psi_lowest,
                  const double psi_highest,
-                 const double slope) const;
+                 const double slope,
+                 const double reach) const;
 
     /** Size of the finest cells (their shortest edge). */
     double finest_cell_size;
 
+    /** Half width of the band of finest cells around the surface. */
+    double band_half_width;
+
+    /**
+     * How far the surface can move in a step, by the CFL number (at least
+     * the band).
+     */
+    double reach_half_width;
+
     const unsigned int min_level, bulk_level, max_level;
+
+    /** 'Band placement = predicted'. */
+    const bool band_predicted;
 
   private:
     double band_width;
-    bool   band_predicted;
-    double band_half_width;
-    /** How far the surface can move in a step (at least the band). */
-    double reach_half_width;
   };
 
   /**
@@ -63,7 +73,13 @@ namespace vefs
    * cubic one of the refined cell, not the Q1 one. If @p surface_ahead is
    * given (the level set the next advection will give, predict_level_set()),
    * cells take the finer of the levels the two level sets ask for, and
-   * @p surface_ahead is transferred too.
+   * @p surface_ahead is transferred too. Ahead of the surface, the cells
+   * within a step's motion of the predicted surface (|@p surface_ahead -
+   * psi| at the cell, and two finest cells more) are brought one level below
+   * the finest, so that the next refinement ahead takes one cycle: where the
+   * surface moves slowly this halo is thin, where it moves fast as wide as
+   * the motion. The adaptation after the advection then keeps such cells
+   * within the CFL number's reach (MeshLevels::expect_cfl()) as they are.
    */
   template <int dim>
   bool
