@@ -13,8 +13,8 @@ namespace vefs
     : min_level(parameters.min_level)
     , bulk_level(parameters.bulk_level)
     , max_level(parameters.max_level)
-    , band_predicted(parameters.band_predicted)
     , band_width(parameters.band_width)
+    , band_predicted(parameters.band_predicted)
   {
     finest_cell_size = std::numeric_limits<double>::max();
     for (unsigned int d = 0; d < parameters.dimension; ++d)
@@ -38,22 +38,43 @@ namespace vefs
   }
 
   unsigned int
-  MeshLevels::target_level(const double psi_lowest,
-                           const double psi_highest,
-                           const double slope,
-                           const double reach) const
+  MeshLevels::target_level(const CellLevelSet &psi, const double reach) const
   {
     const double distance =
-      (psi_lowest <= 0 && psi_highest >= 0)
+      (psi.lowest <= 0 && psi.highest >= 0)
         ? 0
-        : std::min(std::abs(psi_lowest), std::abs(psi_highest)) /
-            std::max(1., slope);
-    const unsigned int away = psi_highest < 0 ? bulk_level : min_level;
+        : std::min(std::abs(psi.lowest), std::abs(psi.highest)) /
+            std::max(1., psi.slope);
+    const unsigned int away = psi.highest < 0 ? bulk_level : min_level;
     if (distance <= band_half_width)
       return max_level;
     if (distance <= reach)
       return std::max(away, std::max(max_level, 1u) - 1);
     return away;
+  }
+
+  std::pair<unsigned int, unsigned int>
+  MeshLevels::allowed_levels(const CellLevelSet &present) const
+  {
+    if (!band_predicted)
+      {
+        const unsigned int target = target_level(present, reach_half_width);
+        return {target, target};
+      }
+    return {target_level(present, band_half_width),
+            target_level(present, reach_half_width)};
+  }
+
+  std::pair<unsigned int, unsigned int>
+  MeshLevels::allowed_levels(const CellLevelSet &present,
+                             const CellLevelSet &ahead,
+                             const double        motion) const
+  {
+    const double halo =
+      std::max(motion + 2 * finest_cell_size, band_half_width);
+    const unsigned int target = std::max(target_level(present, band_half_width),
+                                         target_level(ahead, halo));
+    return {target, target};
   }
 
   namespace
@@ -81,41 +102,23 @@ namespace vefs
       return gradient.norm();
     }
 
-    /** The lowest and highest of the level set slot of @p level_set. */
+    /** The level set slot of @p level_set on @p cell. */
     template <int dim>
-    std::pair<double, double>
-    level_set_range(
-      const typename TransportedFields<dim>::VectorType    &level_set,
-      const typename DoFHandler<dim>::active_cell_iterator &cell)
+    MeshLevels::CellLevelSet
+    cell_level_set(const typename TransportedFields<dim>::VectorType &level_set,
+                   const typename DoFHandler<dim>::active_cell_iterator &cell)
     {
-      constexpr unsigned int c = TransportedFields<dim>::level_set_component;
-      double                 lowest  = std::numeric_limits<double>::max();
-      double                 highest = -lowest;
+      constexpr unsigned int   c = TransportedFields<dim>::level_set_component;
+      MeshLevels::CellLevelSet psi{std::numeric_limits<double>::max(),
+                                   -std::numeric_limits<double>::max(),
+                                   level_set_slope<dim>(level_set, cell)};
       for (const unsigned int v : cell->vertex_indices())
         {
-          const double psi = level_set(cell->vertex_dof_index(v, c));
-          lowest           = std::min(lowest, psi);
-          highest          = std::max(highest, psi);
+          const double value = level_set(cell->vertex_dof_index(v, c));
+          psi.lowest         = std::min(psi.lowest, value);
+          psi.highest        = std::max(psi.highest, value);
         }
-      return {lowest, highest};
-    }
-
-    /**
-     * The target level of @p cell from the level set slot of @p level_set
-     * (a vector with the layout of the fields) and @p reach.
-     */
-    template <int dim>
-    unsigned int
-    target_level(const MeshLevels                                  &levels,
-                 const typename TransportedFields<dim>::VectorType &level_set,
-                 const typename DoFHandler<dim>::active_cell_iterator &cell,
-                 const double                                          reach)
-    {
-      const auto [lowest, highest] = level_set_range<dim>(level_set, cell);
-      return levels.target_level(lowest,
-                                 highest,
-                                 level_set_slope<dim>(level_set, cell),
-                                 reach);
+      return psi;
     }
 
     /**
@@ -136,56 +139,6 @@ namespace vefs
           motion = std::max(motion, std::abs(psi_ahead(dof) - psi(dof)));
         }
       return motion;
-    }
-
-    /**
-     * The levels @p cell may keep: it is refined below the first, coarsened
-     * above the second. Widened band: the target of the present surface.
-     * Refined ahead (@p surface_ahead given): the finer of the targets of the
-     * present surface (the band only) and the predicted one (the halo
-     * within the local motion). After the advection: anything from the
-     * band's target up to the halo's level within the CFL number's reach.
-     */
-    template <int dim>
-    std::pair<unsigned int, unsigned int>
-    allowed_levels(
-      const MeshLevels                                     &levels,
-      const TransportedFields<dim>                         &fields,
-      const typename TransportedFields<dim>::VectorType    *surface_ahead,
-      const typename DoFHandler<dim>::active_cell_iterator &cell)
-    {
-      if (!levels.band_predicted)
-        {
-          const unsigned int target =
-            target_level<dim>(levels,
-                              fields.fields,
-                              cell,
-                              levels.reach_half_width);
-          return {target, target};
-        }
-      if (surface_ahead)
-        {
-          const double reach_ahead =
-            local_motion<dim>(fields.fields, *surface_ahead, cell) +
-            2 * levels.finest_cell_size;
-          const unsigned int target =
-            std::max(target_level<dim>(levels,
-                                       fields.fields,
-                                       cell,
-                                       levels.band_half_width),
-                     target_level<dim>(levels,
-                                       *surface_ahead,
-                                       cell,
-                                       std::max(reach_ahead,
-                                                levels.band_half_width)));
-          return {target, target};
-        }
-      return {
-        target_level<dim>(levels, fields.fields, cell, levels.band_half_width),
-        target_level<dim>(levels,
-                          fields.fields,
-                          cell,
-                          levels.reach_half_width)};
     }
 
     /**
@@ -333,8 +286,14 @@ namespace vefs
               // Remembered for the partitioner (children inherit it): the
               // flow is solved on liquid cells only.
               cell->set_material_id(has_liquid ? liquid_material_id : 0);
+              const auto present = cell_level_set<dim>(fields.fields, cell);
               const auto [lowest, highest] =
-                allowed_levels<dim>(levels, fields, surface_ahead, cell);
+                surface_ahead
+                  ? levels.allowed_levels(
+                      present,
+                      cell_level_set<dim>(*surface_ahead, cell),
+                      local_motion<dim>(fields.fields, *surface_ahead, cell))
+                  : levels.allowed_levels(present);
               const unsigned int level = cell->level();
               if (level < lowest)
                 {

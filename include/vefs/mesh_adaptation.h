@@ -29,39 +29,59 @@ namespace vefs
     void
     expect_cfl(const double cfl);
 
+    /** A level set on a cell: its lowest and highest nodal values, slope. */
+    struct CellLevelSet
+    {
+      double lowest;
+      double highest;
+      double slope;
+    };
+
     /**
-     * The level of a cell whose nodal level set values lie in [@p psi_lowest,
-     * @p psi_highest] and whose level set slope is @p slope. Where psi has
-     * been stretched (slope above 1) psi underestimates the distance to the
+     * The levels a cell with the level set @p present may keep: it is
+     * refined below the first, coarsened above the second. Widened band:
+     * the target of the surface. After an advection with 'Band placement =
+     * predicted': anything from the band's target up to the halo's level
+     * (one below the finest) within the CFL number's reach (expect_cfl()).
+     */
+    std::pair<unsigned int, unsigned int>
+    allowed_levels(const CellLevelSet &present) const;
+
+    /**
+     * Refined ahead ('Band placement = predicted'): the finer of the
+     * @p present surface's target (its band only) and that of the predicted
+     * surface @p ahead, with a halo one level below the finest within
+     * @p motion (how far the surface moves at the cell in the step) and two
+     * finest cells more.
+     */
+    std::pair<unsigned int, unsigned int>
+    allowed_levels(const CellLevelSet &present,
+                   const CellLevelSet &ahead,
+                   const double        motion) const;
+
+    /** Size of the finest cells (their shortest edge). */
+    double finest_cell_size;
+
+    const unsigned int min_level, bulk_level, max_level;
+
+  private:
+    /**
+     * The level of a cell with the level set @p psi. Where psi has been
+     * stretched (slope above 1) psi underestimates the distance to the
      * surface by that factor, and the band is measured in psi / slope.
      * Beyond the band but within @p reach of the surface: one level below
      * the finest (at least the level away from the surface).
      */
     unsigned int
-    target_level(const double psi_lowest,
-                 const double psi_highest,
-                 const double slope,
-                 const double reach) const;
+    target_level(const CellLevelSet &psi, const double reach) const;
 
-    /** Size of the finest cells (their shortest edge). */
-    double finest_cell_size;
-
+    double band_width;
+    bool   band_predicted;
     /** Half width of the band of finest cells around the surface. */
     double band_half_width;
-
-    /**
-     * How far the surface can move in a step, by the CFL number (at least
-     * the band).
-     */
+    /** How far the surface can move in a step, by the CFL number (at least
+     * the band). */
     double reach_half_width;
-
-    const unsigned int min_level, bulk_level, max_level;
-
-    /** 'Band placement = predicted'. */
-    const bool band_predicted;
-
-  private:
-    double band_width;
   };
 
   /**
