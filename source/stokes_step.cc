@@ -16,7 +16,6 @@
 
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
-#include <vefs/component_wise_matrix.h>
 #include <vefs/free_surface.h>
 #include <vefs/ghost_penalty.h>
 #include <vefs/initial_liquid.h>
@@ -580,24 +579,51 @@ namespace vefs
       contact.keep_rows(system_matrix, system_rhs, constraints);
   }
 
+  namespace
+  {
+    /** An ML hierarchy as @p data describes it, with a coarse grid of at most
+     * @p coarse_rows rows (factorised by KLU on one rank). */
+    void
+    initialize_amg(
+      TrilinosWrappers::PreconditionAMG                       &amg,
+      const TrilinosWrappers::SparseMatrix                    &matrix,
+      const TrilinosWrappers::PreconditionAMG::AdditionalData &data,
+      const int                                                coarse_rows)
+    {
+      Teuchos::ParameterList              ml_parameters;
+      std::unique_ptr<Epetra_MultiVector> near_kernel;
+      data.set_parameters(ml_parameters, near_kernel, matrix);
+      ml_parameters.set("coarse: max size", coarse_rows);
+      amg.initialize(matrix, ml_parameters);
+    }
+  } // namespace
+
   template <int dim>
   void
   StokesStep<dim>::make_amg_hierarchies(StepSystems &systems) const
   {
     // AMG for the velocity block, told about the constant modes (one per
     // velocity component) so that aggregation treats them as near-kernel.
-    const auto                     components = velocity_components(dof_handler,
-                                                liquid_index,
-                                                owned_partitioning[0],
-                                                touched_partitioning[0]);
     std::vector<std::vector<bool>> constant_modes(dim);
     {
       const IndexSet &owned_u = owned_partitioning[0];
       for (unsigned int d = 0; d < dim; ++d)
         constant_modes[d].assign(owned_u.n_elements(), false);
-      for (const auto i : owned_u)
-        constant_modes[static_cast<unsigned int>(components(i))]
-                      [owned_u.index_within_set(i)] = true;
+      std::vector<types::global_dof_index> dof_indices;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index)
+          {
+            const auto &fe = cell->get_fe();
+            dof_indices.resize(fe.n_dofs_per_cell());
+            cell->get_dof_indices(dof_indices);
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const unsigned int c = fe.system_to_component_index(i).first;
+                if (c < dim && owned_u.is_element(dof_indices[i]))
+                  constant_modes[c][owned_u.index_within_set(dof_indices[i])] =
+                    true;
+              }
+          }
     }
     TrilinosWrappers::PreconditionAMG::AdditionalData velocity_data;
     velocity_data.elliptic              = true;
@@ -610,21 +636,8 @@ namespace vefs
     velocity_data.aggregation_threshold =
       parameters.flow_on_parents ? 0.05 : 0.02;
     velocity_data.constant_modes = constant_modes;
-    // The hierarchy of the block's components each on their own, with
-    // plain (unsmoothed) aggregation: in the 3D ball at 2.5 mm the whole
-    // block has 12.5e6 entries and smoothed aggregation made a first coarse
-    // level of 243 entries per row (4.8e6), the V-cycle's second largest
-    // cost. Step 54 (2 ranks): 46 Krylov iterations instead of 35, AMG
-    // setup and solve 6.2 s instead of 8.4 s; steps 1-3: 69 iterations
-    // instead of 53, 5.5 s instead of 10.2 s.
-    systems.velocity_matrix =
-      component_wise_part(system_matrix.block(0, 0), components);
-    Teuchos::ParameterList              ml_parameters;
-    std::unique_ptr<Epetra_MultiVector> near_kernel;
-    velocity_data.set_parameters(ml_parameters,
-                                 near_kernel,
-                                 *systems.velocity_matrix);
-    ml_parameters.set("aggregation: damping factor", 0.);
+    systems.velocity_amg =
+      std::make_unique<TrilinosWrappers::PreconditionAMG>();
     // ML's coarse grid of up to 2000 rows, with dim near-kernel vectors per
     // aggregate, is nearly dense in 3D: its KLU factorisation on one rank
     // took 9 s of the 3D ball to t = 0.2 s on 1 rank and as much on 2.
@@ -633,10 +646,10 @@ namespace vefs
     // 2D the factorisation is cheap and 500 rows cost iterations (2D broken
     // dam: 2475 instead of 1542; the small grids of the tests, whose whole
     // velocity block fits in 2000 rows, 4 times more).
-    ml_parameters.set("coarse: max size", dim == 3 ? 500 : 2000);
-    systems.velocity_amg =
-      std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    systems.velocity_amg->initialize(*systems.velocity_matrix, ml_parameters);
+    initialize_amg(*systems.velocity_amg,
+                   system_matrix.block(0, 0),
+                   velocity_data,
+                   dim == 3 ? 500 : 2000);
 
     // The same sweeps for the pressure Laplacian L_w: with ML's default of
     // 2, water's iterations grew once the AMG had more than one level (2D
@@ -783,7 +796,6 @@ namespace vefs
                                           elements,
                                           tau),
                         tau,
-                        nullptr,
                         nullptr,
                         nullptr});
     return *step_systems;

@@ -10,7 +10,6 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
-#include <Epetra_CrsMatrix.h>
 #include <vefs/contact_walls.h>
 #include <vefs/flow_elements.h>
 #include <vefs/ghost_penalty.h>
@@ -229,11 +228,9 @@ namespace vefs
      */
     struct StepSystems
     {
-      StokesCellSystem<dim> cells;
-      GhostPenalty<dim>     faces;
-      double                tau;
-      /** The velocity block's AMG and the matrix it was built from. */
-      std::unique_ptr<Epetra_CrsMatrix>                  velocity_matrix;
+      StokesCellSystem<dim>                              cells;
+      GhostPenalty<dim>                                  faces;
+      double                                             tau;
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> velocity_amg;
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> laplace_amg;
       /** Solves so far: the later ones are contact iterations. */
