@@ -279,14 +279,12 @@ namespace vefs
         for (const auto &cell : fields.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              bool has_liquid = false;
-              for (const unsigned int v : cell->vertex_indices())
-                if (fields.fields(cell->vertex_dof_index(v, c)) < 0)
-                  has_liquid = true;
-              // Remembered for the partitioner (children inherit it): the
-              // flow is solved on liquid cells only.
-              cell->set_material_id(has_liquid ? liquid_material_id : 0);
               const auto present = cell_level_set<dim>(fields.fields, cell);
+              // Liquid cells (a vertex with psi < 0) are remembered for the
+              // partitioner (children inherit it): the flow is solved on
+              // them only.
+              cell->set_material_id(present.lowest < 0 ? liquid_material_id
+                                                       : 0);
               const auto [lowest, highest] =
                 surface_ahead
                   ? levels.allowed_levels(
