@@ -345,11 +345,13 @@ namespace vefs
             new_vectors.push_back(&vector);
           }
         transfer.unpack(fields, new_vectors);
-        fields.fields             = transferred[0];
-        fields.level_set_gradient = transferred[1];
+        // swap(), not operator=: a vector whose owned range is the same
+        // after the change would keep its old ghost layout.
+        fields.fields.swap(transferred[0]);
+        fields.level_set_gradient.swap(transferred[1]);
         if (surface_ahead)
           {
-            *surface_ahead = transferred[2];
+            surface_ahead->swap(transferred[2]);
             surface_ahead->update_ghost_values();
             fields.distribute_constraints(*surface_ahead);
             surface_ahead->update_ghost_values();
