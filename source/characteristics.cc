@@ -62,13 +62,36 @@ namespace vefs
         TransportedFields<dim>::level_set_component;
       FieldValues<dim> values;
       const auto       dof_cell = fields.cell_of(cell);
-      for (const unsigned int v : cell->vertex_indices())
+      if (const double *lattice = fields.coarsened_detail.lattice(cell))
         {
-          const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
-          for (unsigned int c = 0; c < fields.n_components; ++c)
-            values[c] +=
-              weight * fields.fields(dof_cell->vertex_dof_index(v, c));
+          // Coarsened before this advection: Q1 in the former child.
+          unsigned int child = 0;
+          Point<dim>   xi_child;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const unsigned int upper = xi[d] >= 0.5 ? 1 : 0;
+              child |= upper << d;
+              xi_child[d] = 2 * xi[d] - upper;
+            }
+          const unsigned int n = fields.coarsened_detail.components();
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const unsigned int point =
+                CoarsenedDetail<dim>::lattice_point(child, v);
+              const double weight =
+                BoxMeshLocator<dim>::vertex_weight(xi_child, v);
+              for (unsigned int c = 0; c < fields.n_components; ++c)
+                values[c] += weight * lattice[point * n + c];
+            }
         }
+      else
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
+            for (unsigned int c = 0; c < fields.n_components; ++c)
+              values[c] +=
+                weight * fields.fields(dof_cell->vertex_dof_index(v, c));
+          }
       if (how.velocity_gradient)
         for (const unsigned int v : cell->vertex_indices())
           {

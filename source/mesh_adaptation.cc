@@ -70,10 +70,18 @@ namespace vefs
                              const CellLevelSet &ahead,
                              const double        motion) const
   {
+    const unsigned int target = std::max(target_level(present, band_half_width),
+                                         allowed_levels(ahead, motion).first);
+    return {target, target};
+  }
+
+  std::pair<unsigned int, unsigned int>
+  MeshLevels::allowed_levels(const CellLevelSet &ahead,
+                             const double        motion) const
+  {
     const double halo =
       std::max(motion + 2 * finest_cell_size, band_half_width);
-    const unsigned int target = std::max(target_level(present, band_half_width),
-                                         target_level(ahead, halo));
+    const unsigned int target = target_level(ahead, halo);
     return {target, target};
   }
 
@@ -194,7 +202,8 @@ namespace vefs
                 for (const unsigned int v : cell->vertex_indices())
                   {
                     const double *point_values =
-                      &values[(dim + 1) * lattice_index(child, v)];
+                      &values[(dim + 1) *
+                              CoarsenedDetail<dim>::lattice_point(child, v)];
                     write_if_owned(
                       fields.fields,
                       cell->vertex_dof_index(
@@ -211,19 +220,6 @@ namespace vefs
       }
 
     private:
-      /**
-       * Index in the lattice of the children's vertices of vertex @p v of
-       * child @p child: per direction, the child's and the vertex's offsets.
-       */
-      static unsigned int
-      lattice_index(const unsigned int child, const unsigned int v)
-      {
-        unsigned int index = 0, stride = 1;
-        for (unsigned int d = 0; d < dim; ++d, stride *= 3)
-          index += stride * (((child >> d) & 1) + ((v >> d) & 1));
-        return index;
-      }
-
       static void
       write_if_owned(typename TransportedFields<dim>::VectorType &vector,
                      const types::global_dof_index                dof,
@@ -270,7 +266,8 @@ namespace vefs
              const MeshLevels                            &levels,
              const unsigned int                           max_cycles,
              const LevelSetInterpolation                  interpolation,
-             typename TransportedFields<dim>::VectorType *surface_ahead)
+             typename TransportedFields<dim>::VectorType *surface_ahead,
+             const PresentBand                            present_band)
   {
     constexpr unsigned int c = TransportedFields<dim>::level_set_component;
     bool                   changed = false;
@@ -285,19 +282,25 @@ namespace vefs
               // them only.
               cell->set_material_id(present.lowest < 0 ? liquid_material_id
                                                        : 0);
-              const auto [lowest, highest] =
-                surface_ahead
-                  ? levels.allowed_levels(
-                      present,
-                      cell_level_set<dim>(*surface_ahead, cell),
-                      local_motion<dim>(fields.fields, *surface_ahead, cell))
-                  : levels.allowed_levels(present);
+              std::pair<unsigned int, unsigned int> allowed;
+              if (!surface_ahead)
+                allowed = levels.allowed_levels(present);
+              else
+                {
+                  const auto ahead = cell_level_set<dim>(*surface_ahead, cell);
+                  const double motion =
+                    local_motion<dim>(fields.fields, *surface_ahead, cell);
+                  allowed = present_band == PresentBand::kept
+                              ? levels.allowed_levels(present, ahead, motion)
+                              : levels.allowed_levels(ahead, motion);
+                }
               const unsigned int level = cell->level();
-              if (level < lowest)
+              if (level < allowed.first)
                 {
                   cell->set_refine_flag();
                 }
-              else if (level > highest)
+              else if (level > allowed.second &&
+                       present_band != PresentBand::refine_only)
                 {
                   cell->set_coarsen_flag();
                 }
@@ -333,6 +336,11 @@ namespace vefs
             std::make_unique<HermiteRefinement<dim>>(triangulation,
                                                      fields,
                                                      interpolation);
+        if (present_band != PresentBand::kept)
+          fields.coarsened_detail.attach(triangulation,
+                                         fields.dof_handler,
+                                         fields.fields,
+                                         fields.n_components);
         triangulation.execute_coarsening_and_refinement();
 
         fields.setup_dofs();
@@ -358,6 +366,10 @@ namespace vefs
           }
         if (hermite_refinement)
           hermite_refinement->unpack(fields);
+        if (present_band != PresentBand::kept)
+          fields.coarsened_detail.unpack(triangulation,
+                                         fields.dof_handler,
+                                         fields.fields);
         fields.finalize();
         changed = true;
       }
@@ -408,21 +420,32 @@ namespace vefs
     const MeshLevels                            &levels,
     const unsigned int                           max_cycles,
     const LevelSetInterpolation                  interpolation,
-    typename TransportedFields<dim>::VectorType &surface_ahead)
+    typename TransportedFields<dim>::VectorType &surface_ahead,
+    const bool                                   coarsen_present_band)
   {
     // The halo makes one cycle enough unless the surface moves farther than
     // the last step's: more cycles then, until the predicted surface lies
     // in finest cells (each cycle transfers all fields).
     for (unsigned int cycle = 0; cycle < max_cycles; ++cycle)
-      if (!adapt_mesh(triangulation,
-                      fields,
-                      levels,
-                      1,
-                      interpolation,
-                      &surface_ahead) ||
-          count_coarse_surface_cells(fields, surface_ahead, levels.max_level) ==
-            0)
-        break;
+      {
+        const PresentBand present_band =
+          !coarsen_present_band ? PresentBand::kept
+          : cycle == 0          ? PresentBand::coarsened
+                                : PresentBand::refine_only;
+        if (!adapt_mesh(triangulation,
+                        fields,
+                        levels,
+                        1,
+                        interpolation,
+                        &surface_ahead,
+                        present_band) ||
+            count_coarse_surface_cells(fields,
+                                       surface_ahead,
+                                       levels.max_level) == 0)
+          break;
+      }
+    if (coarsen_present_band)
+      fields.coarsened_detail.update_ghosts(triangulation);
   }
 
   template bool
@@ -431,14 +454,16 @@ namespace vefs
                 const MeshLevels &,
                 const unsigned int,
                 const LevelSetInterpolation,
-                TransportedFields<2>::VectorType *);
+                TransportedFields<2>::VectorType *,
+                const PresentBand);
   template bool
   adapt_mesh<3>(parallel::distributed::Triangulation<3> &,
                 TransportedFields<3> &,
                 const MeshLevels &,
                 const unsigned int,
                 const LevelSetInterpolation,
-                TransportedFields<3>::VectorType *);
+                TransportedFields<3>::VectorType *,
+                const PresentBand);
 
   template unsigned int
   count_coarse_surface_cells<2>(const TransportedFields<2> &,
@@ -453,12 +478,14 @@ namespace vefs
                              const MeshLevels &,
                              const unsigned int,
                              const LevelSetInterpolation,
-                             TransportedFields<2>::VectorType &);
+                             TransportedFields<2>::VectorType &,
+                             const bool);
   template void
   refine_ahead_of_surface<3>(parallel::distributed::Triangulation<3> &,
                              TransportedFields<3> &,
                              const MeshLevels &,
                              const unsigned int,
                              const LevelSetInterpolation,
-                             TransportedFields<3>::VectorType &);
+                             TransportedFields<3>::VectorType &,
+                             const bool);
 } // namespace vefs

@@ -382,7 +382,7 @@ namespace vefs
       prm.declare_entry(
         "Band placement",
         "widened",
-        Patterns::Selection("widened|predicted"),
+        Patterns::Selection("widened|predicted|predicted, one change"),
         "How the band of finest cells keeps up with a moving surface. "
         "widened: the band is widened by the CFL number, as 'Band width' "
         "says, and the mesh is adapted once per step, after the advection. "
@@ -394,8 +394,16 @@ namespace vefs
         "at the cost of one more trace and a few more adaptation cycles per "
         "step. Cells within a step's local motion of the predicted surface "
         "(and two finest cells more) are brought one level below the finest, "
-        "so that the next step's refinement takes one cycle there. Needs "
-        "'Remap distance = 0'.");
+        "so that the next step's refinement takes one cycle there. "
+        "predicted, one change: as predicted, but the change before the "
+        "advection also coarsens the band of the present surface, which "
+        "the next mesh change would otherwise coarsen after the advection: "
+        "the advection reads the coarsened cells' fields at their former "
+        "children's vertices (kept for it), and the mesh changes once per "
+        "step instead of twice, again after the advection only where the "
+        "surface left the finest cells. Needs linear interpolation at the "
+        "feet (Level set, Velocity and Stress interpolation). "
+        "Both predicted placements need 'Remap distance = 0'.");
       prm.declare_entry(
         "Flow cells",
         "finest",
@@ -765,13 +773,14 @@ namespace vefs
     prm.leave_subsection();
 
     prm.enter_subsection("Mesh refinement");
-    min_level        = prm.get_integer("Minimum level");
-    bulk_level       = prm.get_integer("Bulk level");
-    max_level        = prm.get_integer("Maximum level");
-    band_width       = prm.get_double("Band width");
-    band_predicted   = prm.get("Band placement") == "predicted";
-    extension_layers = prm.get_integer("Extension layers");
-    flow_on_parents  = prm.get("Flow cells") == "parents";
+    min_level          = prm.get_integer("Minimum level");
+    bulk_level         = prm.get_integer("Bulk level");
+    max_level          = prm.get_integer("Maximum level");
+    band_width         = prm.get_double("Band width");
+    band_predicted     = prm.get("Band placement") != "widened";
+    band_in_one_change = prm.get("Band placement") == "predicted, one change";
+    extension_layers   = prm.get_integer("Extension layers");
+    flow_on_parents    = prm.get("Flow cells") == "parents";
     extend_outside_velocity =
       prm.get("Outside velocity of cut cells") == "extension";
     extend_outside_stress =
@@ -1001,6 +1010,15 @@ namespace vefs
             "'predicted' adapts the mesh before every advection; between "
             "remaps the mesh stays: it needs 'Mesh refinement/Remap "
             "distance = 0'");
+    require(!band_in_one_change ||
+              (level_set_interpolation == LevelSetInterpolation::linear &&
+               velocity_interpolation == VelocityInterpolation::linear &&
+               !cubic_stress_interpolation),
+            "Mesh refinement/Band placement",
+            "'predicted, one change' keeps the Q1 fields of the coarsened "
+            "cells only: it needs 'linear' for 'Level set interpolation', "
+            "'Velocity interpolation' and 'Stress interpolation' (in 'Mesh "
+            "refinement')");
     require(!flow_on_parents || periodic_directions().empty(),
             "Mesh refinement/Flow cells",
             "'parents' is not implemented with periodic walls: use "

@@ -502,7 +502,8 @@ namespace vefs
                                     levels,
                                     levels.max_level - levels.min_level,
                                     parameters.level_set_interpolation,
-                                    surface_ahead);
+                                    surface_ahead,
+                                    parameters.band_in_one_change);
             statistics.advected_cells = triangulation.n_global_active_cells();
           }
         bool remap = true;
@@ -516,6 +517,7 @@ namespace vefs
             tau,
             *locator,
             FootInterpolation(parameters, rheology.shear_modulus()));
+          fields.coarsened_detail.clear();
           if (level_set_history.enabled())
             {
               level_set_history.compose(fields,
@@ -535,12 +537,15 @@ namespace vefs
         }
 
         // 2. Mesh: refine around the new free surface (at remaps), mark
-        // liquid cells.
+        // liquid cells. Refined and coarsened in one change before the
+        // advection, the mesh changes again only where the surface left the
+        // finest cells.
         {
           TimerOutput::Scope scope(timer, "2 mesh adaptation");
           statistics.coarse_surface_cells =
             count_coarse_surface_cells(fields, parameters.max_level);
-          if (remap)
+          if (remap && (!parameters.band_in_one_change ||
+                        statistics.coarse_surface_cells > 0))
             {
               levels.expect_cfl(
                 std::max(expected_cfl,

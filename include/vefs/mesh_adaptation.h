@@ -59,6 +59,10 @@ namespace vefs
                    const CellLevelSet &ahead,
                    const double        motion) const;
 
+    /** The same for the predicted surface @p ahead alone. */
+    std::pair<unsigned int, unsigned int>
+    allowed_levels(const CellLevelSet &ahead, const double motion) const;
+
     /** Size of the finest cells (their shortest edge). */
     double finest_cell_size;
 
@@ -85,6 +89,26 @@ namespace vefs
   };
 
   /**
+   * What a change of the mesh before an advection ('Band placement =
+   * predicted') does with the band of the present surface.
+   */
+  enum class PresentBand
+  {
+    /** Keep it: the adaptation after the advection coarsens it. */
+    kept,
+    /**
+     * Coarsen it in the same change; the coarsened cells keep their fields
+     * for the advection in TransportedFields::coarsened_detail.
+     */
+    coarsened,
+    /**
+     * A further cycle after 'coarsened': refine only, carrying the detail
+     * along.
+     */
+    refine_only
+  };
+
+  /**
    * Refine and coarsen toward the target levels, transferring the fields,
    * at most @p max_cycles times (each changes a cell by one level) or until
    * the mesh stops changing. Returns true if it changed. In the time loop
@@ -100,6 +124,7 @@ namespace vefs
    * surface moves slowly this halo is thin, where it moves fast as wide as
    * the motion. The adaptation after the advection then keeps such cells
    * within the CFL number's reach (MeshLevels::expect_cfl()) as they are.
+   * @p present_band says whether the present surface's band is kept too.
    */
   template <int dim>
   bool
@@ -109,7 +134,8 @@ namespace vefs
     const MeshLevels                            &levels,
     const unsigned int                           max_cycles,
     const LevelSetInterpolation                  interpolation,
-    typename TransportedFields<dim>::VectorType *surface_ahead = nullptr);
+    typename TransportedFields<dim>::VectorType *surface_ahead = nullptr,
+    const PresentBand present_band = PresentBand::kept);
 
   /**
    * The cells the surface (psi = 0) crosses that are coarser than
@@ -134,7 +160,9 @@ namespace vefs
    * toward the present surface and @p surface_ahead, the level set the
    * advection will give (predict_level_set()), one cycle at a time until
    * the predicted surface lies in cells of the finest level, at most
-   * @p max_cycles times.
+   * @p max_cycles times. With @p coarsen_present_band the first cycle also
+   * coarsens the present band (PresentBand::coarsened), and the ghost cells
+   * get the coarsened cells' detail at the end.
    */
   template <int dim>
   void
@@ -144,7 +172,8 @@ namespace vefs
     const MeshLevels                            &levels,
     const unsigned int                           max_cycles,
     const LevelSetInterpolation                  interpolation,
-    typename TransportedFields<dim>::VectorType &surface_ahead);
+    typename TransportedFields<dim>::VectorType &surface_ahead,
+    const bool                                   coarsen_present_band);
 } // namespace vefs
 
 #endif

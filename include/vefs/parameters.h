@@ -162,7 +162,13 @@ namespace vefs
      * Whether the band is refined ahead of the surface before each advection
      * ('Band placement = predicted') instead of widened by the CFL number.
      */
-    bool         band_predicted;
+    bool band_predicted;
+    /**
+     * Whether that change also coarsens the present band ('Band placement =
+     * predicted, one change'), the coarsened cells' fields kept for the
+     * advection (TransportedFields::coarsened_detail).
+     */
+    bool         band_in_one_change;
     unsigned int extension_layers;
     /** Whether the flow's unknowns on the finest cells are their parents'
      * ('Mesh refinement/Flow cells = parents'), see FlowElements. */

@@ -10,6 +10,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <vefs/coarsened_detail.h>
+
 #include <array>
 #include <vector>
 
@@ -140,6 +142,12 @@ namespace vefs
      * component d (the other slots are unused).
      */
     VectorType level_set_gradient;
+    /**
+     * The fields of the cells the last mesh change coarsened, at their
+     * former children's vertices, until the advection has read them ('Band
+     * placement = predicted, one change'); empty otherwise.
+     */
+    CoarsenedDetail<dim> coarsened_detail;
 
   private:
     /** The owned lines of @p constraints in local vector indices. */
