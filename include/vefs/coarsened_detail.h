@@ -101,15 +101,6 @@ namespace vefs
       return n_components;
     }
 
-    /** Cells with detail on this rank, ghosts included. */
-    unsigned int
-    n_cells() const
-    {
-      return n_points * n_components == 0
-               ? 0
-               : values.size() / (n_points * n_components);
-    }
-
     /** Forget all detail (after the advection has read it). */
     void
     clear();
