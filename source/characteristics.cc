@@ -63,27 +63,8 @@ namespace vefs
       FieldValues<dim> values;
       const auto       dof_cell = fields.cell_of(cell);
       if (const double *lattice = fields.coarsened_detail.lattice(cell))
-        {
-          // Coarsened before this advection: Q1 in the former child.
-          unsigned int child = 0;
-          Point<dim>   xi_child;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              const unsigned int upper = xi[d] >= 0.5 ? 1 : 0;
-              child |= upper << d;
-              xi_child[d] = 2 * xi[d] - upper;
-            }
-          const unsigned int n = fields.coarsened_detail.components();
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              const unsigned int point =
-                CoarsenedDetail<dim>::lattice_point(child, v);
-              const double weight =
-                BoxMeshLocator<dim>::vertex_weight(xi_child, v);
-              for (unsigned int c = 0; c < fields.n_components; ++c)
-                values[c] += weight * lattice[point * n + c];
-            }
-        }
+        // Coarsened before this advection: Q1 in the former child.
+        fields.coarsened_detail.add_values(lattice, xi, &values[0]);
       else
         for (const unsigned int v : cell->vertex_indices())
           {

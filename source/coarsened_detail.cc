@@ -1,5 +1,6 @@
 #include <deal.II/grid/grid_tools.h>
 
+#include <vefs/box_mesh_locator.h>
 #include <vefs/coarsened_detail.h>
 
 #include <cstring>
@@ -114,6 +115,29 @@ namespace vefs
           }
       });
     handle = none;
+  }
+
+  template <int dim>
+  void
+  CoarsenedDetail<dim>::add_values(const double     *lattice,
+                                   const Point<dim> &xi,
+                                   double           *values) const
+  {
+    unsigned int child = 0;
+    Point<dim>   xi_child;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const unsigned int upper = xi[d] >= 0.5 ? 1 : 0;
+        child |= upper << d;
+        xi_child[d] = 2 * xi[d] - upper;
+      }
+    for (const unsigned int v : GeometryInfo<dim>::vertex_indices())
+      {
+        const double  weight = BoxMeshLocator<dim>::vertex_weight(xi_child, v);
+        const double *point  = lattice + lattice_point(child, v) * n_components;
+        for (unsigned int c = 0; c < n_components; ++c)
+          values[c] += weight * point[c];
+      }
   }
 
   template <int dim>

@@ -94,12 +94,15 @@ namespace vefs
       return offset == none ? nullptr : values.data() + offset;
     }
 
-    /** Components per lattice point (0 before the first attach()). */
-    unsigned int
-    components() const
-    {
-      return n_components;
-    }
+    /**
+     * The Q1 values of all components at the unit-cell point @p xi of a
+     * cell with detail @p lattice (from lattice()), in the former child
+     * that holds the point, added to @p values.
+     */
+    void
+    add_values(const double     *lattice,
+               const Point<dim> &xi,
+               double           *values) const;
 
     /** Forget all detail (after the advection has read it). */
     void
