@@ -2,6 +2,7 @@
 
 #include <Epetra_CrsMatrix.h>
 #include <vefs/contact_walls.h>
+#include <vefs/mpi_concatenate.h>
 
 #include <algorithm>
 #include <array>
@@ -108,9 +109,8 @@ namespace vefs
     // Where the last step ended released (from every rank: the partition
     // has changed since), the liquid is likely to leave the wall again.
     std::set<std::array<double, dim>> released;
-    for (const auto &nodes : Utilities::MPI::all_gather(comm, released_nodes))
-      for (const Point<dim> &p : nodes)
-        released.insert(coordinates(p));
+    for (const Point<dim> &p : concatenated_over_ranks(comm, released_nodes))
+      released.insert(coordinates(p));
     for (const auto &entry : wall_unknowns)
       if (owned.is_element(entry.first))
         in_contact(entry.first) =

@@ -3,6 +3,7 @@
 
 #include <vefs/box_mesh_locator.h>
 #include <vefs/field_hermite.h>
+#include <vefs/mpi_concatenate.h>
 #include <vefs/redistancing.h>
 
 #include <functional>
@@ -185,15 +186,13 @@ namespace vefs
 
     const MPI_Comm comm =
       fields.dof_handler.get_triangulation().get_communicator();
-    std::vector<Point<dim>> all_crossings;
-    for (const auto &part : Utilities::MPI::all_gather(comm, crossings))
-      all_crossings.insert(all_crossings.end(), part.begin(), part.end());
+    const std::vector<Point<dim>> all_crossings =
+      concatenated_over_ranks(comm, crossings);
     if (all_crossings.empty())
       return;
-    std::vector<Tensor<1, dim>> all_normals;
-    if (cubic)
-      for (const auto &part : Utilities::MPI::all_gather(comm, normals))
-        all_normals.insert(all_normals.end(), part.begin(), part.end());
+    const std::vector<Tensor<1, dim>> all_normals =
+      cubic ? concatenated_over_ranks(comm, normals)
+            : std::vector<Tensor<1, dim>>();
 
     const auto                tree = pack_rtree_of_indices(all_crossings);
     std::vector<unsigned int> nearest;
