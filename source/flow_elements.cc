@@ -3,6 +3,9 @@
 #include <boost/serialization/vector.hpp>
 #include <vefs/flow_elements.h>
 
+#include <array>
+#include <numeric>
+
 
 namespace vefs
 {
@@ -11,7 +14,61 @@ namespace vefs
     : child_vertex_weights(make_child_vertex_weights<dim>())
     , on_parents(parameters.flow_on_parents)
     , finest_level(parameters.max_level)
+    , all_components(dim + 1)
   {
+    std::iota(all_components.begin(), all_components.end(), 0);
+  }
+
+  template <int dim>
+  void
+  FlowElements<dim>::add_restricted_to_parent(
+    const FiniteElement<dim>        &fe,
+    const unsigned int               child,
+    const FullMatrix<double>        &fine,
+    FullMatrix<double>              &parent,
+    const std::vector<unsigned int> &components) const
+  {
+    // Q1 in every component. FiniteElement::component_to_system_index()
+    // searches the whole table: look the cell's dofs up once.
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    const unsigned int     n          = fe.n_dofs_per_cell();
+    std::array<std::array<unsigned int, n_vertices>, dim + 1> dof_of;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const auto [component, vertex] = fe.system_to_component_index(i);
+        dof_of[component][vertex]      = i;
+      }
+    std::vector<unsigned int> &rows = restriction_rows;
+    rows.clear();
+    for (const unsigned int component : components)
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        rows.push_back(dof_of[component][v]);
+
+    // fine P in the rows of the components, then P^T (fine P).
+    FullMatrix<double> &right = restriction_scratch;
+    right.reinit(n, n);
+    for (const unsigned int component : components)
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        {
+          const unsigned int j = dof_of[component][v];
+          for (const auto &[vertex, weight] : child_vertex_weights[child][v])
+            {
+              const unsigned int J = dof_of[component][vertex];
+              for (const unsigned int i : rows)
+                right(i, J) += fine(i, j) * weight;
+            }
+        }
+    for (const unsigned int component : components)
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        {
+          const unsigned int i = dof_of[component][v];
+          for (const auto &[vertex, weight] : child_vertex_weights[child][v])
+            {
+              const unsigned int I = dof_of[component][vertex];
+              for (const unsigned int j : rows)
+                parent(I, j) += weight * right(i, j);
+            }
+        }
   }
 
   template <int dim>
@@ -21,31 +78,7 @@ namespace vefs
                                               const FullMatrix<double> &fine,
                                               FullMatrix<double> &parent) const
   {
-    const unsigned int n = fe.n_dofs_per_cell();
-    // Q1 in every component: dof i is the vertex 'second' of the component
-    // 'first'.
-    const auto parent_dof = [&](const unsigned int i,
-                                const unsigned int vertex) {
-      return fe.component_to_system_index(fe.system_to_component_index(i).first,
-                                          vertex);
-    };
-    FullMatrix<double> right(n, n);
-    for (unsigned int j = 0; j < n; ++j)
-      for (const auto &[vertex, weight] :
-           child_vertex_weights[child][fe.system_to_component_index(j).second])
-        {
-          const unsigned int J = parent_dof(j, vertex);
-          for (unsigned int i = 0; i < n; ++i)
-            right(i, J) += fine(i, j) * weight;
-        }
-    for (unsigned int i = 0; i < n; ++i)
-      for (const auto &[vertex, weight] :
-           child_vertex_weights[child][fe.system_to_component_index(i).second])
-        {
-          const unsigned int I = parent_dof(i, vertex);
-          for (unsigned int j = 0; j < n; ++j)
-            parent(I, j) += weight * right(i, j);
-        }
+    add_restricted_to_parent(fe, child, fine, parent, all_components);
   }
 
   template <int dim>
@@ -55,14 +88,20 @@ namespace vefs
                                               const Vector<double>     &fine,
                                               Vector<double> &parent) const
   {
-    const unsigned int n = fe.n_dofs_per_cell();
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    const unsigned int     n          = fe.n_dofs_per_cell();
+    std::array<std::array<unsigned int, n_vertices>, dim + 1> dof_of;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const auto [component, vertex] = fe.system_to_component_index(i);
+        dof_of[component][vertex]      = i;
+      }
     for (unsigned int i = 0; i < n; ++i)
       {
         const auto [component, child_vertex] = fe.system_to_component_index(i);
         for (const auto &[vertex, weight] :
              child_vertex_weights[child][child_vertex])
-          parent(fe.component_to_system_index(component, vertex)) +=
-            weight * fine(i);
+          parent(dof_of[component][vertex]) += weight * fine(i);
       }
   }
 

@@ -438,10 +438,11 @@ namespace vefs
     std::vector<types::global_dof_index> dof_indices(
       fe_collection[liquid_index].n_dofs_per_cell());
 
-    const FiniteElement<dim> &fe = fe_collection[liquid_index];
-    const unsigned int        n  = fe.n_dofs_per_cell();
-    FullMatrix<double>        parent_matrix(n, n), parent_schur(n, n);
-    Vector<double>            parent_rhs(n), parent_pressure_mass(n);
+    const FiniteElement<dim>       &fe = fe_collection[liquid_index];
+    const unsigned int              n  = fe.n_dofs_per_cell();
+    FullMatrix<double>              parent_matrix(n, n), parent_schur(n, n);
+    Vector<double>                  parent_rhs(n), parent_pressure_mass(n);
+    const std::vector<unsigned int> pressure_only = {dim};
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && !elements.on_parent(cell) &&
           domain->has_liquid(cell))
@@ -487,7 +488,8 @@ namespace vefs
               elements.add_restricted_to_parent(fe,
                                                 child,
                                                 local.schur,
-                                                parent_schur);
+                                                parent_schur,
+                                                pressure_only);
               elements.add_restricted_to_parent(fe,
                                                 child,
                                                 local.rhs,

@@ -175,6 +175,18 @@ namespace vefs
                              const FullMatrix<double> &fine,
                              FullMatrix<double>       &parent) const;
 
+    /**
+     * The same for a cell matrix that is zero outside the rows and columns
+     * of the @p components: only those are restricted (the Schur
+     * preconditioner's cell matrix holds the pressure only).
+     */
+    void
+    add_restricted_to_parent(const FiniteElement<dim>        &fe,
+                             const unsigned int               child,
+                             const FullMatrix<double>        &fine,
+                             FullMatrix<double>              &parent,
+                             const std::vector<unsigned int> &components) const;
+
     /** The same for a cell vector: P^T fine. */
     void
     add_restricted_to_parent(const FiniteElement<dim> &fe,
@@ -195,9 +207,14 @@ namespace vefs
      * vertex v of child c: [c][v]. */
     const ChildVertexWeights<dim> child_vertex_weights;
 
-    const bool               on_parents;
-    const unsigned int       finest_level;
-    const LiquidDomain<dim> *domain = nullptr;
+    const bool         on_parents;
+    const unsigned int finest_level;
+    /** 0, ..., dim: the components of the flow. */
+    std::vector<unsigned int> all_components;
+    /** Reused by add_restricted_to_parent(): it runs for every child. */
+    mutable FullMatrix<double>        restriction_scratch;
+    mutable std::vector<unsigned int> restriction_rows;
+    const LiquidDomain<dim>          *domain = nullptr;
     /** With parents: by active cell index, of owned and ghost cells. */
     std::vector<Location> element_locations;
     /** Unknowns at the parent's vertices, (vertex, component) in
