@@ -393,10 +393,11 @@ namespace vefs
         : elements.element(neighbor);
     if (neighbor_element->level() != element->level())
       return false;
+    const Tensor<1, dim> extent = internal::box_extent<dim>(element);
+    const Tensor<1, dim> neighbor_extent =
+      internal::box_extent<dim>(neighbor_element);
     for (unsigned int d = 0; d < dim; ++d)
-      if (std::abs(neighbor_element->extent_in_direction(d) -
-                   element->extent_in_direction(d)) >
-          1e-10 * element->extent_in_direction(d))
+      if (std::abs(neighbor_extent[d] - extent[d]) > 1e-10 * extent[d])
         return false;
     return true;
   }
@@ -441,8 +442,9 @@ namespace vefs
             component[i + layer * n_face_vertices] = c;
         }
 
-    const auto                  element = elements.element(lower);
-    const double                h = element->extent_in_direction(direction);
+    const auto                  element    = elements.element(lower);
+    const Tensor<1, dim>        extent     = internal::box_extent<dim>(element);
+    const double                h          = extent[direction];
     const std::array<double, 3> difference = {{-1. / h, 2. / h, -1. / h}};
     // The Q1 mass matrix of the face, a product over its directions.
     FullMatrix<double> face_mass(n_face_vertices, n_face_vertices);
@@ -454,8 +456,7 @@ namespace vefs
             if (d != direction)
               {
                 const bool same = ((t >> j) & 1) == ((u >> j) & 1);
-                mass *=
-                  element->extent_in_direction(d) * (same ? 1. / 3 : 1. / 6);
+                mass *= extent[d] * (same ? 1. / 3 : 1. / 6);
                 ++j;
               }
           face_mass(t, u) = mass;

@@ -26,9 +26,12 @@ namespace vefs
     Tensor<1, dim>
     box_extent(const CellIterator &cell)
     {
-      Tensor<1, dim> extent;
+      // From two vertices (bit d of a vertex's index is its d-th
+      // coordinate): extent_in_direction() measures four edges in 3D.
+      Tensor<1, dim>    extent;
+      const Point<dim> &lower = cell->vertex(0);
       for (unsigned int d = 0; d < dim; ++d)
-        extent[d] = cell->extent_in_direction(d);
+        extent[d] = cell->vertex(1u << d)[d] - lower[d];
       return extent;
     }
 
