@@ -47,6 +47,29 @@ namespace vefs
     }
 
     /**
+     * A lower bound of the eigenvalues of @p c (Gershgorin's circles): the
+     * smallest diagonal entry less the other entries of its row, in
+     * magnitude. NaN if @p c is not finite.
+     */
+    template <int dim>
+    double
+    gershgorin_lower_bound(const SymmetricTensor<2, dim> &c)
+    {
+      if (!std::isfinite(c.norm()))
+        return std::numeric_limits<double>::quiet_NaN();
+      double bound = std::numeric_limits<double>::max();
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          double row = c[i][i];
+          for (unsigned int j = 0; j < dim; ++j)
+            if (j != i)
+              row -= std::abs(c[i][j]);
+          bound = std::min(bound, row);
+        }
+      return bound;
+    }
+
+    /**
      * How much more stretch (tr B - d) a node outside the liquid may carry
      * than the liquid nodes of its cells. Any finite factor ends the
      * runaway; the outside nodes of the thin sheets of the soft ball
@@ -292,8 +315,14 @@ namespace vefs
                 values.value(vertex_sigma, q);
               measure.elastic_energy +=
                 rheology.elastic_energy_density(sigma) * values.JxW[q];
-              const double lowest =
-                smallest_eigenvalue(rheology.conformation(sigma));
+              const SymmetricTensor<2, dim> conformation =
+                rheology.conformation(sigma);
+              // Where even the bound is positive and above the smallest
+              // eigenvalue so far, the eigenvalue changes no statistic.
+              const double bound = gershgorin_lower_bound(conformation);
+              if (bound > 0 && bound >= measure.min_conformation_eigenvalue)
+                continue;
+              const double lowest = smallest_eigenvalue(conformation);
               measure.min_conformation_eigenvalue =
                 std::min(measure.min_conformation_eigenvalue, lowest);
               if (std::isnan(lowest))
