@@ -318,15 +318,19 @@ namespace vefs
           break;
 
         // The level set gradient has dim used slots, the predicted surface
-        // one.
+        // one. Only the cubic interpolations read the gradient: with the
+        // linear one it is not carried (a fifth of the data sent in 3D).
         using Transfer = VertexFieldTransfer<dim>;
+        const bool with_gradient =
+          interpolation != LevelSetInterpolation::linear;
         std::vector<unsigned int> all_fields(fields.n_components);
         std::iota(all_fields.begin(), all_fields.end(), 0);
         std::vector<unsigned int> gradient(dim);
         std::iota(gradient.begin(), gradient.end(), 0);
         std::vector<typename Transfer::Slot> slots = {
-          {&fields.fields, all_fields},
-          {&fields.level_set_gradient, gradient}};
+          {&fields.fields, all_fields}};
+        if (with_gradient)
+          slots.push_back({&fields.level_set_gradient, gradient});
         if (surface_ahead)
           slots.push_back({surface_ahead, {c}});
         Transfer transfer(triangulation, fields, slots);
@@ -356,10 +360,13 @@ namespace vefs
         // swap(), not operator=: a vector whose owned range is the same
         // after the change would keep its old ghost layout.
         fields.fields.swap(transferred[0]);
-        fields.level_set_gradient.swap(transferred[1]);
+        if (with_gradient)
+          fields.level_set_gradient.swap(transferred[1]);
+        else
+          fields.initialize_vector(fields.level_set_gradient);
         if (surface_ahead)
           {
-            surface_ahead->swap(transferred[2]);
+            surface_ahead->swap(transferred.back());
             surface_ahead->update_ghost_values();
             fields.distribute_constraints(*surface_ahead);
             surface_ahead->update_ghost_values();
