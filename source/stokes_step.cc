@@ -321,6 +321,7 @@ namespace vefs
     lumped_pressure_mass.reinit(owned_partitioning, comm);
     // Touched: the contact reactions of faces read far parent vertices.
     solution.reinit(owned_partitioning, touched_partitioning, comm);
+    constraint_distribution.reinit(constraints, system_rhs, solution);
   }
 
   template <int dim>
@@ -745,9 +746,11 @@ namespace vefs
         throw SolverError(message.str());
       }
     // The rows in contact hold u.n = 0 to the solver's tolerance: exactly,
-    // before the constraints that interpolate from them.
+    // before the constraints that interpolate from them (read from the
+    // ghosted solution).
     contact.set_zero(distributed);
-    constraints.distribute(distributed);
+    solution = distributed;
+    constraint_distribution.distribute(solution, distributed);
     if (!std::isfinite(distributed.l2_norm()))
       throw SolverError("the Stokes solution is not finite; check "
                         "'Gravity', the 'Walls' velocities and 'Time/Time "

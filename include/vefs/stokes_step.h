@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
+#include <vefs/constraint_distribution.h>
 #include <vefs/contact_walls.h>
 #include <vefs/flow_elements.h>
 #include <vefs/ghost_penalty.h>
@@ -197,7 +198,9 @@ namespace vefs
      * imposes on the matrix rows, so that a contact iteration needs neither
      * an assembly nor new constraints.
      */
-    AffineConstraints<double>                     constraints;
+    AffineConstraints<double> constraints;
+    /** constraints.distribute() on the solution, by local indices. */
+    ConstraintDistribution                        constraint_distribution;
     std::array<std::unique_ptr<Function<dim>>, 6> wall_velocity;
 
     TrilinosWrappers::BlockSparseMatrix system_matrix;
