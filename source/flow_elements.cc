@@ -9,6 +9,30 @@
 
 namespace vefs
 {
+  namespace
+  {
+    /**
+     * The dof of each component and vertex of a Q1 FESystem cell, looked
+     * up once: FiniteElement::component_to_system_index() searches the
+     * whole table on every call.
+     */
+    template <int dim>
+    std::array<std::array<unsigned int, GeometryInfo<dim>::vertices_per_cell>,
+               dim + 1>
+    dofs_by_component_and_vertex(const FiniteElement<dim> &fe)
+    {
+      std::array<std::array<unsigned int, GeometryInfo<dim>::vertices_per_cell>,
+                 dim + 1>
+        dof_of;
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          const auto [component, vertex] = fe.system_to_component_index(i);
+          dof_of[component][vertex]      = i;
+        }
+      return dof_of;
+    }
+  } // namespace
+
   template <int dim>
   FlowElements<dim>::FlowElements(const Parameters &parameters)
     : child_vertex_weights(make_child_vertex_weights<dim>())
@@ -28,17 +52,10 @@ namespace vefs
     FullMatrix<double>              &parent,
     const std::vector<unsigned int> &components) const
   {
-    // Q1 in every component. FiniteElement::component_to_system_index()
-    // searches the whole table: look the cell's dofs up once.
     constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
     const unsigned int     n          = fe.n_dofs_per_cell();
-    std::array<std::array<unsigned int, n_vertices>, dim + 1> dof_of;
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const auto [component, vertex] = fe.system_to_component_index(i);
-        dof_of[component][vertex]      = i;
-      }
-    std::vector<unsigned int> &rows = restriction_rows;
+    const auto             dof_of     = dofs_by_component_and_vertex(fe);
+    std::vector<unsigned int> &rows   = restriction_rows;
     rows.clear();
     for (const unsigned int component : components)
       for (unsigned int v = 0; v < n_vertices; ++v)
@@ -88,14 +105,8 @@ namespace vefs
                                               const Vector<double>     &fine,
                                               Vector<double> &parent) const
   {
-    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    const unsigned int     n          = fe.n_dofs_per_cell();
-    std::array<std::array<unsigned int, n_vertices>, dim + 1> dof_of;
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const auto [component, vertex] = fe.system_to_component_index(i);
-        dof_of[component][vertex]      = i;
-      }
+    const unsigned int n      = fe.n_dofs_per_cell();
+    const auto         dof_of = dofs_by_component_and_vertex(fe);
     for (unsigned int i = 0; i < n; ++i)
       {
         const auto [component, child_vertex] = fe.system_to_component_index(i);
