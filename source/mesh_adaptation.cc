@@ -277,12 +277,12 @@ namespace vefs
           if (cell->is_locally_owned())
             {
               const auto present = cell_level_set<dim>(fields.fields, cell);
+              std::pair<unsigned int, unsigned int> allowed;
               // Liquid cells (a vertex with psi < 0) are remembered for the
               // partitioner (children inherit it): the flow is solved on
-              // them only.
-              cell->set_material_id(present.lowest < 0 ? liquid_material_id
-                                                       : 0);
-              std::pair<unsigned int, unsigned int> allowed;
+              // them only, after the advection, so where the surface is
+              // predicted to go counts.
+              double lowest = present.lowest;
               if (!surface_ahead)
                 allowed = levels.allowed_levels(present);
               else
@@ -293,7 +293,9 @@ namespace vefs
                   allowed = present_band == PresentBand::kept
                               ? levels.allowed_levels(present, ahead, motion)
                               : levels.allowed_levels(ahead, motion);
+                  lowest  = ahead.lowest;
                 }
+              cell->set_material_id(lowest < 0 ? liquid_material_id : 0);
               const unsigned int level = cell->level();
               if (level < allowed.first)
                 {
@@ -313,6 +315,15 @@ namespace vefs
           if (cell->is_locally_owned() &&
               (cell->refine_flag_set() || cell->coarsen_flag_set()))
             flagged = true;
+        // The partitioner weighs a coarsened family by its parent, whose
+        // material id is that of the time it was refined.
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() && cell->coarsen_flag_set())
+            cell->parent()->set_material_id(0);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() && cell->coarsen_flag_set() &&
+              cell->material_id() == liquid_material_id)
+            cell->parent()->set_material_id(liquid_material_id);
         if (!Utilities::MPI::logical_or(flagged,
                                         triangulation.get_communicator()))
           break;
