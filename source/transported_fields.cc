@@ -24,6 +24,12 @@ namespace vefs
     dof_handler.distribute_dofs(fe);
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+    // Building a partitioner finds the owners of the ghosts by messages:
+    // once per mesh, not per vector.
+    partitioner = std::make_shared<Utilities::MPI::Partitioner>(
+      owned_dofs,
+      relevant_dofs,
+      dof_handler.get_triangulation().get_communicator());
 
     constraints.clear();
     constraints.reinit(relevant_dofs);
@@ -68,9 +74,7 @@ namespace vefs
   void
   TransportedFields<dim>::initialize_vector(VectorType &vector) const
   {
-    vector.reinit(owned_dofs,
-                  relevant_dofs,
-                  dof_handler.get_triangulation().get_communicator());
+    vector.reinit(partitioner);
   }
 
   template <int dim>

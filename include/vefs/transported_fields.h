@@ -105,7 +105,8 @@ namespace vefs
     void
     distribute_constraints(VectorType &vector) const;
 
-    /** Vector with the layout of the fields, ghosted. */
+    /** Vector with the layout of the fields, ghosted; all such vectors
+     * share one MPI partitioner, made once per mesh. */
     void
     initialize_vector(VectorType &vector) const;
 
@@ -127,14 +128,15 @@ namespace vefs
     }
 
     /** dim + 1, plus the stress components if there is a stress. */
-    const unsigned int        n_components;
-    const MappingQ1<dim>      mapping;
-    const FESystem<dim>       fe;
-    DoFHandler<dim>           dof_handler;
-    AffineConstraints<double> constraints;
-    IndexSet                  owned_dofs;
-    IndexSet                  relevant_dofs;
-    VectorType                fields;
+    const unsigned int                                 n_components;
+    const MappingQ1<dim>                               mapping;
+    const FESystem<dim>                                fe;
+    DoFHandler<dim>                                    dof_handler;
+    AffineConstraints<double>                          constraints;
+    IndexSet                                           owned_dofs;
+    IndexSet                                           relevant_dofs;
+    std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+    VectorType                                         fields;
     /**
      * The gradient of the level set, carried along the characteristics with
      * it by the gradient-augmented transport (FieldHermite): same layout
