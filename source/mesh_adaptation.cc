@@ -278,11 +278,7 @@ namespace vefs
             {
               const auto present = cell_level_set<dim>(fields.fields, cell);
               std::pair<unsigned int, unsigned int> allowed;
-              // Liquid cells (a vertex with psi < 0) are remembered for the
-              // partitioner (children inherit it): the flow is solved on
-              // them only, after the advection, so where the surface is
-              // predicted to go counts.
-              double lowest = present.lowest;
+              double                                lowest = present.lowest;
               if (!surface_ahead)
                 allowed = levels.allowed_levels(present);
               else
@@ -295,6 +291,10 @@ namespace vefs
                               : levels.allowed_levels(ahead, motion);
                   lowest  = ahead.lowest;
                 }
+              // Liquid cells (a vertex with psi < 0) are remembered for the
+              // partitioner (children inherit it): the flow is solved on
+              // them only, after the advection, so with a predicted surface
+              // its liquid counts.
               cell->set_material_id(lowest < 0 ? liquid_material_id : 0);
               const unsigned int level = cell->level();
               if (level < allowed.first)
