@@ -315,15 +315,6 @@ namespace vefs
           if (cell->is_locally_owned() &&
               (cell->refine_flag_set() || cell->coarsen_flag_set()))
             flagged = true;
-        // The partitioner weighs a coarsened family by its parent, whose
-        // material id is that of the time it was refined.
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned() && cell->coarsen_flag_set())
-            cell->parent()->set_material_id(0);
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned() && cell->coarsen_flag_set() &&
-              cell->material_id() == liquid_material_id)
-            cell->parent()->set_material_id(liquid_material_id);
         if (!Utilities::MPI::logical_or(flagged,
                                         triangulation.get_communicator()))
           break;

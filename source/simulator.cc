@@ -154,11 +154,21 @@ namespace vefs
         triangulation.add_periodicity(pairs);
       }
     // p4est balances the work: a cell with liquid costs the flow solve, an
-    // empty one only the transport.
+    // empty one only the transport. A family to be coarsened is weighed
+    // through its parent, whose own mark dates from its refinement: it has
+    // liquid if a child has.
     triangulation.signals.weight.connect(
       [](const typename Triangulation<dim>::cell_iterator &cell,
-         const typename Triangulation<dim>::CellStatus) -> unsigned int {
-        return cell->material_id() == liquid_material_id ? 4 : 1;
+         const typename Triangulation<dim>::CellStatus status) -> unsigned int {
+        bool liquid = cell->material_id() == liquid_material_id;
+        if (status == Triangulation<dim>::CELL_COARSEN)
+          {
+            AssertThrow(cell->has_children(), ExcInternalError());
+            liquid = false;
+            for (const auto &child : cell->child_iterators())
+              liquid |= child->material_id() == liquid_material_id;
+          }
+        return liquid ? 4 : 1;
       });
     locator = std::make_unique<BoxMeshLocator<dim>>(triangulation,
                                                     cavity,
@@ -628,8 +638,8 @@ namespace vefs
         {
           TimerOutput::Scope scope(timer, "3 diffusion: solve");
           statistics.linear_iterations +=
-            flow.solve(full_solve ? parameters.solver_tolerance :
-                                    parameters.contact_solver_tolerance);
+            flow.solve(full_solve ? parameters.solver_tolerance
+                                  : parameters.contact_solver_tolerance);
         }
         if (full_solve && solves >= max_contact_iterations)
           break;
