@@ -240,6 +240,25 @@ namespace vefs
                                               relevant_dofs,
                                               comm);
     constraints.close();
+
+    // Pressures are constrained by pressures only (hanging nodes,
+    // interpolation on the parents).
+    const types::global_dof_index n_u = owned_partitioning[0].size();
+    pressure_constraints.clear();
+    pressure_constraints.reinit(touched_partitioning[1]);
+    for (const auto &line : constraints.get_lines())
+      if (line.index >= n_u)
+        {
+          pressure_constraints.add_line(line.index - n_u);
+          for (const auto &[column, weight] : line.entries)
+            {
+              AssertThrow(column >= n_u, ExcInternalError());
+              pressure_constraints.add_entry(line.index - n_u,
+                                             column - n_u,
+                                             weight);
+            }
+        }
+    pressure_constraints.close();
   }
 
   template <int dim>
@@ -306,16 +325,12 @@ namespace vefs
     system_matrix.reinit(owned_partitioning, pattern, comm);
 
     // The Schur approximation couples the pressures as the pressure block of
-    // the system does (cells and ghost penalty alike); the constrained
-    // velocities keep the diagonal entry that their rows receive.
-    BlockDynamicSparsityPattern schur_pattern(touched_partitioning);
-    for (const auto &entry : pattern.block(1, 1))
-      schur_pattern.block(1, 1).add(entry.row(), entry.column());
-    for (const auto i : touched_partitioning[0])
-      if (constraints.is_constrained(i))
-        schur_pattern.block(0, 0).add(i, i);
+    // the system does (cells and ghost penalty alike).
     schur_matrix.clear();
-    schur_matrix.reinit(owned_partitioning, schur_pattern, comm);
+    schur_matrix.reinit(owned_partitioning[1],
+                        owned_partitioning[1],
+                        pattern.block(1, 1),
+                        comm);
 
     system_rhs.reinit(owned_partitioning, comm);
     lumped_pressure_mass.reinit(owned_partitioning, comm);
@@ -444,6 +459,32 @@ namespace vefs
     FullMatrix<double>              parent_matrix(n, n), parent_schur(n, n);
     Vector<double>                  parent_rhs(n), parent_pressure_mass(n);
     const std::vector<unsigned int> pressure_only = {dim};
+
+    // The pressure rows and columns of a local Schur matrix, in the
+    // numbering of the pressure block (after all velocities).
+    const types::global_dof_index        n_u = owned_partitioning[0].size();
+    std::vector<types::global_dof_index> pressure_dofs;
+    std::vector<unsigned int>            pressure_rows;
+    FullMatrix<double>                   pressure_schur;
+    const auto                           add_to_schur =
+      [&](const FullMatrix<double>                   &schur,
+          const std::vector<types::global_dof_index> &dofs) {
+        pressure_dofs.clear();
+        pressure_rows.clear();
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          if (dofs[i] >= n_u)
+            {
+              pressure_dofs.push_back(dofs[i] - n_u);
+              pressure_rows.push_back(i);
+            }
+        pressure_schur.reinit(pressure_rows.size(), pressure_rows.size());
+        pressure_schur.extract_submatrix_from(schur,
+                                              pressure_rows,
+                                              pressure_rows);
+        pressure_constraints.distribute_local_to_global(pressure_schur,
+                                                        pressure_dofs,
+                                                        schur_matrix);
+      };
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && !elements.on_parent(cell) &&
           domain->has_liquid(cell))
@@ -456,9 +497,7 @@ namespace vefs
                                                  dof_indices,
                                                  system_matrix,
                                                  system_rhs);
-          constraints.distribute_local_to_global(local.schur,
-                                                 dof_indices,
-                                                 schur_matrix);
+          add_to_schur(local.schur, dof_indices);
           constraints.distribute_local_to_global(local.pressure_mass,
                                                  dof_indices,
                                                  lumped_pressure_mass);
@@ -513,7 +552,9 @@ namespace vefs
                                                                  liquid_index);
                       system_matrix.add(dof, dof, std::abs(local.matrix(i, i)));
                       if (component == dim)
-                        schur_matrix.add(dof, dof, std::abs(local.schur(i, i)));
+                        schur_matrix.add(dof - n_u,
+                                         dof - n_u,
+                                         std::abs(local.schur(i, i)));
                     }
                 }
             }
@@ -532,21 +573,13 @@ namespace vefs
                                                  dof_indices,
                                                  system_matrix,
                                                  system_rhs);
-          constraints.distribute_local_to_global(parent_schur,
-                                                 dof_indices,
-                                                 schur_matrix);
+          add_to_schur(parent_schur, dof_indices);
           constraints.distribute_local_to_global(parent_pressure_mass,
                                                  dof_indices,
                                                  lumped_pressure_mass);
         }
 
     Vector<double> zero_rhs;
-    // The Schur pattern holds the pressure unknowns (after the velocity
-    // block) only.
-    const types::global_dof_index        n_u = owned_partitioning[0].size();
-    std::vector<types::global_dof_index> pressure_dofs;
-    std::vector<unsigned int>            pressure_rows;
-    FullMatrix<double>                   pressure_schur;
     systems.faces.for_each_face(
       dof_handler,
       true,
@@ -558,21 +591,7 @@ namespace vefs
                                                dofs,
                                                system_matrix,
                                                system_rhs);
-        pressure_dofs.clear();
-        pressure_rows.clear();
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          if (dofs[i] >= n_u)
-            {
-              pressure_dofs.push_back(dofs[i]);
-              pressure_rows.push_back(i);
-            }
-        pressure_schur.reinit(pressure_rows.size(), pressure_rows.size());
-        pressure_schur.extract_submatrix_from(schur,
-                                              pressure_rows,
-                                              pressure_rows);
-        constraints.distribute_local_to_global(pressure_schur,
-                                               pressure_dofs,
-                                               schur_matrix);
+        add_to_schur(schur, dofs);
       });
     system_matrix.compress(VectorOperation::add);
     schur_matrix.compress(VectorOperation::add);
@@ -663,7 +682,7 @@ namespace vefs
     laplace_data.elliptic        = true;
     laplace_data.smoother_sweeps = parameters.amg_smoother_sweeps;
     systems.laplace_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    systems.laplace_amg->initialize(schur_matrix.block(1, 1), laplace_data);
+    systems.laplace_amg->initialize(schur_matrix, laplace_data);
   }
 
   template <int dim>

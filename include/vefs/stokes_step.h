@@ -204,7 +204,14 @@ namespace vefs
     std::array<std::unique_ptr<Function<dim>>, 6> wall_velocity;
 
     TrilinosWrappers::BlockSparseMatrix system_matrix;
-    TrilinosWrappers::BlockSparseMatrix schur_matrix;
+    /**
+     * The approximation L_w of the Schur complement, on the pressure
+     * unknowns only, numbered within the pressure block (a block matrix
+     * built three more Epetra matrices with their maps each step, unused).
+     */
+    TrilinosWrappers::SparseMatrix schur_matrix;
+    /** The constraints of the pressure unknowns, numbered as schur_matrix. */
+    AffineConstraints<double> pressure_constraints;
     BlockVector                         system_rhs;
     BlockVector                         lumped_pressure_mass;
     BlockVector                         solution;
