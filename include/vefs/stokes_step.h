@@ -212,12 +212,12 @@ namespace vefs
     TrilinosWrappers::SparseMatrix schur_matrix;
     /** The constraints of the pressure unknowns, numbered as schur_matrix. */
     AffineConstraints<double> pressure_constraints;
-    BlockVector                         system_rhs;
-    BlockVector                         lumped_pressure_mass;
-    BlockVector                         solution;
-    const Rheology<dim>                 rheology;
-    ContactWalls<dim>                   contact;
-    FlowElements<dim>                   elements;
+    BlockVector               system_rhs;
+    BlockVector               lumped_pressure_mass;
+    BlockVector               solution;
+    const Rheology<dim>       rheology;
+    ContactWalls<dim>         contact;
+    FlowElements<dim>         elements;
     /** The unknowns of the finest cells interpolated from their parent's
      * (FlowElements), a part of every other set of constraints. */
     AffineConstraints<double> interpolation;
