@@ -205,9 +205,9 @@ namespace vefs
 
     TrilinosWrappers::BlockSparseMatrix system_matrix;
     /**
-     * The approximation L_w of the Schur complement, on the pressure
-     * unknowns only, numbered within the pressure block (a block matrix
-     * built three more Epetra matrices with their maps each step, unused).
+     * The approximation L_w of the Schur complement, for the pressure
+     * Laplacian's AMG: on the pressure unknowns only, numbered within the
+     * pressure block, so that no velocity blocks are built each step.
      */
     TrilinosWrappers::SparseMatrix schur_matrix;
     /** The constraints of the pressure unknowns, numbered as schur_matrix. */
