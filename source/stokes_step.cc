@@ -52,6 +52,43 @@ namespace vefs
     };
 
     /**
+     * The rows of @p pattern that this rank owns, after
+     * SparsityTools::distribute_sparsity_pattern() has added the other
+     * ranks' entries to them. Given the ghost rows as well, deal.II builds
+     * Epetra maps of them and a second graph for the entries that the
+     * assembly adds to other ranks' rows: on two ranks the Epetra matrices'
+     * setup took longer than on one. Without them, Epetra sends those
+     * entries itself when the matrix is compressed.
+     */
+    BlockDynamicSparsityPattern
+    owned_rows(const BlockDynamicSparsityPattern &pattern,
+               const std::vector<IndexSet>       &owned_partitioning)
+    {
+      BlockDynamicSparsityPattern          owned(owned_partitioning);
+      std::vector<types::global_dof_index> columns;
+      for (unsigned int i = 0; i < owned_partitioning.size(); ++i)
+        for (unsigned int j = 0; j < owned_partitioning.size(); ++j)
+          {
+            const DynamicSparsityPattern &from = pattern.block(i, j);
+            for (const types::global_dof_index row : owned_partitioning[i])
+              {
+                const auto length = from.row_length(row);
+                if (length == 0)
+                  continue;
+                columns.clear();
+                auto entry = from.begin(row);
+                for (types::global_dof_index k = 0; k < length; ++k, ++entry)
+                  columns.push_back(entry->column());
+                owned.block(i, j).add_entries(row,
+                                              columns.begin(),
+                                              columns.end(),
+                                              true);
+              }
+          }
+      return owned;
+    }
+
+    /**
      * Block-triangular preconditioner of [A B^T; B -C]: one AMG V-cycle for
      * A and the Cahouet-Chabard approximation of the Schur complement,
      * S^-1 ~ mu M_p^-1 + L_w^-1, with L_w the pressure Laplacian weighted by
@@ -321,15 +358,17 @@ namespace vefs
                                                dof_handler.locally_owned_dofs(),
                                                comm,
                                                touched_dofs);
+    const BlockDynamicSparsityPattern owned_pattern =
+      owned_rows(pattern, owned_partitioning);
     system_matrix.clear();
-    system_matrix.reinit(owned_partitioning, pattern, comm);
+    system_matrix.reinit(owned_partitioning, owned_pattern, comm);
 
     // The Schur approximation couples the pressures as the pressure block of
     // the system does (cells and ghost penalty alike).
     schur_matrix.clear();
     schur_matrix.reinit(owned_partitioning[1],
                         owned_partitioning[1],
-                        pattern.block(1, 1),
+                        owned_pattern.block(1, 1),
                         comm);
 
     system_rhs.reinit(owned_partitioning, comm);
