@@ -422,7 +422,7 @@ namespace vefs
   }
 
   template <int dim>
-  void
+  unsigned int
   refine_ahead_of_surface(
     parallel::distributed::Triangulation<dim>   &triangulation,
     TransportedFields<dim>                      &fields,
@@ -435,6 +435,7 @@ namespace vefs
     // The halo makes one cycle enough unless the surface moves farther than
     // the last step's: more cycles then, until the predicted surface lies
     // in finest cells (each cycle transfers all fields).
+    unsigned int changes = 0;
     for (unsigned int cycle = 0; cycle < max_cycles; ++cycle)
       {
         const PresentBand present_band =
@@ -447,14 +448,17 @@ namespace vefs
                         1,
                         interpolation,
                         &surface_ahead,
-                        present_band) ||
-            count_coarse_surface_cells(fields,
+                        present_band))
+          break;
+        ++changes;
+        if (count_coarse_surface_cells(fields,
                                        surface_ahead,
                                        levels.max_level) == 0)
           break;
       }
     if (coarsen_present_band)
       fields.coarsened_detail.update_ghosts(triangulation);
+    return changes;
   }
 
   template bool
@@ -481,7 +485,7 @@ namespace vefs
   count_coarse_surface_cells<3>(const TransportedFields<3> &,
                                 const unsigned int);
 
-  template void
+  template unsigned int
   refine_ahead_of_surface<2>(parallel::distributed::Triangulation<2> &,
                              TransportedFields<2> &,
                              const MeshLevels &,
@@ -489,7 +493,7 @@ namespace vefs
                              const LevelSetInterpolation,
                              TransportedFields<2>::VectorType &,
                              const bool);
-  template void
+  template unsigned int
   refine_ahead_of_surface<3>(parallel::distributed::Triangulation<3> &,
                              TransportedFields<3> &,
                              const MeshLevels &,

@@ -210,6 +210,7 @@ namespace vefs
     add_column("liquid_cells", [](const S &s) { return s.liquid_cells; });
     add_column("coarse_surface_cells",
                [](const S &s) { return s.coarse_surface_cells; });
+    add_column("mesh_changes", [](const S &s) { return s.mesh_changes; });
     add_column("dofs", [](const S &s) { return s.dofs; });
     add_column("linear_iterations",
                [](const S &s) { return s.linear_iterations; });
@@ -320,8 +321,10 @@ namespace vefs
              "potential + elastic; coarse_surface_cells: cells crossed by "
              "the surface right after the advection that are coarser than "
              "the finest level (0 if the band kept up with the surface); "
-             "advected_cells ('Band placement = predicted' only): cells of "
-             "the mesh the advection ran on.\n"
+             "mesh_changes: changes of the mesh in the step (refinement "
+             "ahead of the surface, adaptation after the advection), each "
+             "a rebuild of the whole mesh; advected_cells ('Band placement "
+             "= predicted' only): cells of the mesh the advection ran on.\n"
           << column_header() << '\n';
         header_written = true;
       }

@@ -483,8 +483,9 @@ namespace vefs
         if (!problem.empty())
           stop(statistics.step + 1, statistics, problem, domain, true);
         ++statistics.step;
-        statistics.tau = tau;
-        statistics.cfl = cfl;
+        statistics.tau          = tau;
+        statistics.cfl          = cfl;
+        statistics.mesh_changes = 0;
         // The next step moves the surface about as far as this one.
         const double expected_cfl =
           std::max(parameters.target_cfl, statistics.cfl);
@@ -507,13 +508,14 @@ namespace vefs
               surface_ahead = predict_level_set(fields, tau, *locator);
             }
             TimerOutput::Scope scope(timer, "1 advection: refine ahead");
-            refine_ahead_of_surface(triangulation,
-                                    fields,
-                                    levels,
-                                    levels.max_level - levels.min_level,
-                                    parameters.level_set_interpolation,
-                                    surface_ahead,
-                                    parameters.band_in_one_change);
+            statistics.mesh_changes +=
+              refine_ahead_of_surface(triangulation,
+                                      fields,
+                                      levels,
+                                      levels.max_level - levels.min_level,
+                                      parameters.level_set_interpolation,
+                                      surface_ahead,
+                                      parameters.band_in_one_change);
             statistics.advected_cells = triangulation.n_global_active_cells();
           }
         bool remap = true;
@@ -560,11 +562,12 @@ namespace vefs
               levels.expect_cfl(
                 std::max(expected_cfl,
                          level_set_history.cells_between_remaps()));
-              adapt_mesh(triangulation,
-                         fields,
-                         levels,
-                         1,
-                         parameters.level_set_interpolation);
+              if (adapt_mesh(triangulation,
+                             fields,
+                             levels,
+                             1,
+                             parameters.level_set_interpolation))
+                ++statistics.mesh_changes;
               level_set_history.remap(fields);
             }
           domain = LiquidDomain<dim>(fields);
@@ -630,9 +633,9 @@ namespace vefs
     // section 4); a few times at the most. Until a solve leaves the set
     // unchanged the solves only have to tell which nodes touch: loosely;
     // the step ends with a full solve that leaves the set unchanged too.
-    bool full_solve = !flow.touches_contact_walls() ||
-                      parameters.contact_solver_tolerance <=
-                        parameters.solver_tolerance;
+    bool full_solve =
+      !flow.touches_contact_walls() ||
+      parameters.contact_solver_tolerance <= parameters.solver_tolerance;
     for (unsigned int solves = 1;; ++solves)
       {
         {

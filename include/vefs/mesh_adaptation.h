@@ -162,10 +162,11 @@ namespace vefs
    * the predicted surface lies in cells of the finest level, at most
    * @p max_cycles times. With @p coarsen_present_band the first cycle also
    * coarsens the present band (PresentBand::coarsened), and the ghost cells
-   * get the coarsened cells' detail at the end.
+   * get the coarsened cells' detail at the end. Returns the number of mesh
+   * changes made.
    */
   template <int dim>
-  void
+  unsigned int
   refine_ahead_of_surface(
     parallel::distributed::Triangulation<dim>   &triangulation,
     TransportedFields<dim>                      &fields,

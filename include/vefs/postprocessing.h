@@ -55,7 +55,13 @@ namespace vefs
      * With 'Band placement = predicted': cells of the mesh the advection
      * ran on (refined ahead of the surface).
      */
-    unsigned int advected_cells    = 0;
+    unsigned int advected_cells = 0;
+    /**
+     * Changes of the mesh in the step: the cycles of the refinement ahead
+     * of the surface and the adaptation after the advection. Each rebuilds
+     * and transfers the whole mesh, whatever it changes.
+     */
+    unsigned int mesh_changes      = 0;
     unsigned int dofs              = 0;
     unsigned int linear_iterations = 0;
     double       wall_time         = 0;
