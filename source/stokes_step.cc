@@ -52,19 +52,21 @@ namespace vefs
     };
 
     /**
-     * The rows of @p pattern that this rank owns, after
+     * Set @p owned to the rows of @p pattern that this rank owns, after
      * SparsityTools::distribute_sparsity_pattern() has added the other
      * ranks' entries to them. Given the ghost rows as well, deal.II builds
      * Epetra maps of them and a second graph for the entries that the
      * assembly adds to other ranks' rows: on two ranks the Epetra matrices'
      * setup took longer than on one. Without them, Epetra sends those
-     * entries itself when the matrix is compressed.
+     * entries itself when the matrix is compressed. (An output argument:
+     * deal.II's block patterns cannot be copied once they have blocks.)
      */
-    BlockDynamicSparsityPattern
-    owned_rows(const BlockDynamicSparsityPattern &pattern,
-               const std::vector<IndexSet>       &owned_partitioning)
+    void
+    copy_owned_rows(const BlockDynamicSparsityPattern &pattern,
+                    const std::vector<IndexSet>       &owned_partitioning,
+                    BlockDynamicSparsityPattern       &owned)
     {
-      BlockDynamicSparsityPattern          owned(owned_partitioning);
+      owned.reinit(owned_partitioning);
       std::vector<types::global_dof_index> columns;
       for (unsigned int i = 0; i < owned_partitioning.size(); ++i)
         for (unsigned int j = 0; j < owned_partitioning.size(); ++j)
@@ -85,7 +87,6 @@ namespace vefs
                                               true);
               }
           }
-      return owned;
     }
 
     /**
@@ -358,8 +359,13 @@ namespace vefs
                                                dof_handler.locally_owned_dofs(),
                                                comm,
                                                touched_dofs);
-    const BlockDynamicSparsityPattern owned_pattern =
-      owned_rows(pattern, owned_partitioning);
+    // On one rank all rows are owned: no copy.
+    const bool several_ranks = Utilities::MPI::n_mpi_processes(comm) > 1;
+    BlockDynamicSparsityPattern owned_copy;
+    if (several_ranks)
+      copy_owned_rows(pattern, owned_partitioning, owned_copy);
+    const BlockDynamicSparsityPattern &owned_pattern =
+      several_ranks ? owned_copy : pattern;
     system_matrix.clear();
     system_matrix.reinit(owned_partitioning, owned_pattern, comm);
 
