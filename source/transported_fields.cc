@@ -2,6 +2,7 @@
 #include <deal.II/fe/fe_q.h>
 
 #include <vefs/transported_fields.h>
+#include <vefs/vertex_hanging_nodes.h>
 
 namespace vefs
 {
@@ -33,7 +34,9 @@ namespace vefs
 
     constraints.clear();
     constraints.reinit(relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    make_vertex_hanging_node_constraints(dof_handler,
+                                         relevant_dofs,
+                                         constraints);
     for (const unsigned int d : periodic_directions)
       DoFTools::make_periodicity_constraints(dof_handler,
                                              2 * d,
