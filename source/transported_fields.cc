@@ -2,7 +2,6 @@
 #include <deal.II/fe/fe_q.h>
 
 #include <vefs/transported_fields.h>
-#include <vefs/vertex_hanging_nodes.h>
 
 namespace vefs
 {
@@ -34,9 +33,7 @@ namespace vefs
 
     constraints.clear();
     constraints.reinit(relevant_dofs);
-    make_vertex_hanging_node_constraints(dof_handler,
-                                         relevant_dofs,
-                                         constraints);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     for (const unsigned int d : periodic_directions)
       DoFTools::make_periodicity_constraints(dof_handler,
                                              2 * d,
