@@ -140,6 +140,9 @@ if(EXISTS "${_src}.numdiff")
     separate_arguments(_numdiff_opts UNIX_COMMAND "${_line}")
   endif()
 endif()
+# Commas separate fields too: otherwise numdiff reads "0.91," in
+# "0.91, above 0.8" as text and compares it exactly, whatever the tolerance.
+list(APPEND _numdiff_opts -s " \t\n,")
 # A variant without -q, used to show the differences on failure.
 set(_numdiff_verbose_opts ${_numdiff_opts})
 list(REMOVE_ITEM _numdiff_verbose_opts -q --quiet)
