@@ -44,8 +44,14 @@ namespace vefs
             pcout,
             parameters.verbose ? TimerOutput::summary : TimerOutput::never,
             TimerOutput::wall_times)
+    // Each mesh change rebuilds the local mesh from the coarse cells: on
+    // several ranks deal.II's incremental rebuild passes over it more often
+    // than that (doc/bouncing_ball_3d_study.md, "The local mesh rebuilt from
+    // the coarse cells"), and the cells come in the same order after a resume.
     , triangulation(comm,
-                    Triangulation<dim>::limit_level_difference_at_vertices)
+                    Triangulation<dim>::limit_level_difference_at_vertices,
+                    parallel::distributed::Triangulation<
+                      dim>::mesh_reconstruction_after_repartitioning)
     , cavity(std::make_pair(to_point<dim>(parameters.cavity_lower),
                             to_point<dim>(parameters.cavity_upper)))
     , levels(parameters)
