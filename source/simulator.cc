@@ -44,10 +44,12 @@ namespace vefs
             pcout,
             parameters.verbose ? TimerOutput::summary : TimerOutput::never,
             TimerOutput::wall_times)
-    // Each mesh change rebuilds the local mesh from the coarse cells: on
-    // several ranks deal.II's incremental rebuild passes over it more often
-    // than that (doc/bouncing_ball_3d_study.md, "The local mesh rebuilt from
-    // the coarse cells"), and the cells come in the same order after a resume.
+    // Each mesh change rebuilds the local mesh from the coarse cells instead
+    // of refining and coarsening it until it matches p4est's: fewer passes
+    // on several ranks, and the cells lie in memory in p4est's order (the
+    // space-filling curve), which every loop over them gains from
+    // (doc/bouncing_ball_3d_study.md, "The local mesh rebuilt from the
+    // coarse cells").
     , triangulation(comm,
                     Triangulation<dim>::limit_level_difference_at_vertices,
                     parallel::distributed::Triangulation<
