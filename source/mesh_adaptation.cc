@@ -386,25 +386,24 @@ namespace vefs
   }
 
   template <int dim>
-  unsigned int
-  count_coarse_surface_cells(const TransportedFields<dim> &fields,
-                             const unsigned int            max_level)
+  SurfaceCells
+  count_surface_cells(const TransportedFields<dim> &fields,
+                      const unsigned int            max_level)
   {
-    return count_coarse_surface_cells(fields, fields.fields, max_level);
+    return count_surface_cells(fields, fields.fields, max_level);
   }
 
   template <int dim>
-  unsigned int
-  count_coarse_surface_cells(
+  SurfaceCells
+  count_surface_cells(
     const TransportedFields<dim>                      &fields,
     const typename TransportedFields<dim>::VectorType &level_set,
     const unsigned int                                 max_level)
   {
-    constexpr unsigned int c     = TransportedFields<dim>::level_set_component;
-    unsigned int           count = 0;
+    constexpr unsigned int c = TransportedFields<dim>::level_set_component;
+    SurfaceCells           count;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          static_cast<unsigned int>(cell->level()) < max_level)
+      if (cell->is_locally_owned())
         {
           bool inside = false, outside = false;
           for (const unsigned int v : cell->vertex_indices())
@@ -414,11 +413,17 @@ namespace vefs
               outside |= psi > 0;
             }
           if (inside && outside)
-            ++count;
+            {
+              ++count.total;
+              if (static_cast<unsigned int>(cell->level()) < max_level)
+                ++count.coarse;
+            }
         }
-    return Utilities::MPI::sum(
-      count,
-      fields.dof_handler.get_triangulation().get_communicator());
+    const MPI_Comm comm =
+      fields.dof_handler.get_triangulation().get_communicator();
+    count.coarse = Utilities::MPI::sum(count.coarse, comm);
+    count.total  = Utilities::MPI::sum(count.total, comm);
+    return count;
   }
 
   template <int dim>
@@ -451,9 +456,8 @@ namespace vefs
                         present_band))
           break;
         ++changes;
-        if (count_coarse_surface_cells(fields,
-                                       surface_ahead,
-                                       levels.max_level) == 0)
+        if (count_surface_cells(fields, surface_ahead, levels.max_level)
+              .coarse == 0)
           break;
       }
     if (coarsen_present_band)
@@ -478,12 +482,10 @@ namespace vefs
                 TransportedFields<3>::VectorType *,
                 const PresentBand);
 
-  template unsigned int
-  count_coarse_surface_cells<2>(const TransportedFields<2> &,
-                                const unsigned int);
-  template unsigned int
-  count_coarse_surface_cells<3>(const TransportedFields<3> &,
-                                const unsigned int);
+  template SurfaceCells
+  count_surface_cells<2>(const TransportedFields<2> &, const unsigned int);
+  template SurfaceCells
+  count_surface_cells<3>(const TransportedFields<3> &, const unsigned int);
 
   template unsigned int
   refine_ahead_of_surface<2>(parallel::distributed::Triangulation<2> &,

@@ -405,6 +405,18 @@ namespace vefs
         "feet (Level set, Velocity and Stress interpolation). "
         "Both predicted placements need 'Remap distance = 0'.");
       prm.declare_entry(
+        "Band miss tolerance",
+        "0",
+        Patterns::Double(0, 1),
+        "With 'Band placement = predicted, one change': the fraction of the "
+        "cells the surface crosses after the advection that may be coarser "
+        "than the finest level (the surface left the band there) before the "
+        "mesh changes again after the advection. Each change rebuilds the "
+        "whole mesh; up to this fraction, the flow step cuts those cells on "
+        "their coarser level and the next step's change before the advection "
+        "refines them. 0: the mesh changes whenever one cell is left "
+        "coarse.");
+      prm.declare_entry(
         "Flow cells",
         "finest",
         Patterns::Selection("finest|parents"),
@@ -773,14 +785,15 @@ namespace vefs
     prm.leave_subsection();
 
     prm.enter_subsection("Mesh refinement");
-    min_level          = prm.get_integer("Minimum level");
-    bulk_level         = prm.get_integer("Bulk level");
-    max_level          = prm.get_integer("Maximum level");
-    band_width         = prm.get_double("Band width");
-    band_predicted     = prm.get("Band placement") != "widened";
-    band_in_one_change = prm.get("Band placement") == "predicted, one change";
-    extension_layers   = prm.get_integer("Extension layers");
-    flow_on_parents    = prm.get("Flow cells") == "parents";
+    min_level           = prm.get_integer("Minimum level");
+    bulk_level          = prm.get_integer("Bulk level");
+    max_level           = prm.get_integer("Maximum level");
+    band_width          = prm.get_double("Band width");
+    band_predicted      = prm.get("Band placement") != "widened";
+    band_in_one_change  = prm.get("Band placement") == "predicted, one change";
+    band_miss_tolerance = prm.get_double("Band miss tolerance");
+    extension_layers    = prm.get_integer("Extension layers");
+    flow_on_parents     = prm.get("Flow cells") == "parents";
     extend_outside_velocity =
       prm.get("Outside velocity of cut cells") == "extension";
     extend_outside_stress =
@@ -1019,6 +1032,11 @@ namespace vefs
             "cells only: it needs 'linear' for 'Level set interpolation', "
             "'Velocity interpolation' and 'Stress interpolation' (in 'Mesh "
             "refinement')");
+    require(band_miss_tolerance == 0 || band_in_one_change,
+            "Mesh refinement/Band miss tolerance",
+            "applies to 'Band placement = predicted, one change' only (the "
+            "other placements adapt the mesh after every advection): leave "
+            "it 0 or choose that placement");
     require(!flow_on_parents || periodic_directions().empty(),
             "Mesh refinement/Flow cells",
             "'parents' is not implemented with periodic walls: use "

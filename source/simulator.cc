@@ -559,13 +559,15 @@ namespace vefs
         // 2. Mesh: refine around the new free surface (at remaps), mark
         // liquid cells. Refined and coarsened in one change before the
         // advection, the mesh changes again only where the surface left the
-        // finest cells.
+        // finest cells in more than 'Band miss tolerance' of its cells.
         {
           TimerOutput::Scope scope(timer, "2 mesh adaptation");
-          statistics.coarse_surface_cells =
-            count_coarse_surface_cells(fields, parameters.max_level);
-          if (remap && (!parameters.band_in_one_change ||
-                        statistics.coarse_surface_cells > 0))
+          const SurfaceCells surface =
+            count_surface_cells(fields, parameters.max_level);
+          statistics.coarse_surface_cells = surface.coarse;
+          if (remap &&
+              (!parameters.band_in_one_change ||
+               surface.coarse > parameters.band_miss_tolerance * surface.total))
             {
               levels.expect_cfl(
                 std::max(expected_cfl,

@@ -137,20 +137,29 @@ namespace vefs
     typename TransportedFields<dim>::VectorType *surface_ahead = nullptr,
     const PresentBand present_band = PresentBand::kept);
 
+  /** The cells the surface (psi = 0) crosses, over all ranks. */
+  struct SurfaceCells
+  {
+    /** Those coarser than the finest level. */
+    unsigned int coarse = 0;
+    /** All of them. */
+    unsigned int total = 0;
+  };
+
   /**
-   * The cells the surface (psi = 0) crosses that are coarser than
-   * @p max_level, over all ranks: right after an advection, where the band
-   * of finest cells did not keep up with the surface.
+   * The cells the surface crosses, and those of them coarser than
+   * @p max_level: right after an advection, where the band of finest cells
+   * did not keep up with the surface.
    */
   template <int dim>
-  unsigned int
-  count_coarse_surface_cells(const TransportedFields<dim> &fields,
-                             const unsigned int            max_level);
+  SurfaceCells
+  count_surface_cells(const TransportedFields<dim> &fields,
+                      const unsigned int            max_level);
 
   /** The same for the level set slot of @p level_set (layout of the fields). */
   template <int dim>
-  unsigned int
-  count_coarse_surface_cells(
+  SurfaceCells
+  count_surface_cells(
     const TransportedFields<dim>                      &fields,
     const typename TransportedFields<dim>::VectorType &level_set,
     const unsigned int                                 max_level);

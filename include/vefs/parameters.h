@@ -168,7 +168,13 @@ namespace vefs
      * predicted, one change'), the coarsened cells' fields kept for the
      * advection (TransportedFields::coarsened_detail).
      */
-    bool         band_in_one_change;
+    bool band_in_one_change;
+    /**
+     * The fraction of the surface's cells that may be left coarser than the
+     * finest level after the advection before the mesh changes again then
+     * ('Band miss tolerance').
+     */
+    double       band_miss_tolerance;
     unsigned int extension_layers;
     /** Whether the flow's unknowns on the finest cells are their parents'
      * ('Mesh refinement/Flow cells = parents'), see FlowElements. */

@@ -48,7 +48,7 @@ namespace vefs
     unsigned int liquid_cells     = 0;
     /**
      * Cells crossed by the surface right after the advection that are not
-     * at the finest level (count_coarse_surface_cells()).
+     * at the finest level (count_surface_cells()).
      */
     unsigned int coarse_surface_cells = 0;
     /**
