@@ -1,3 +1,4 @@
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/utilities.h>
 
 #include <vefs/box_q1_values.h>
@@ -5,6 +6,7 @@
 #include <vefs/mesh_adaptation.h>
 #include <vefs/vertex_field_transfer.h>
 
+#include <array>
 #include <numeric>
 
 namespace vefs
@@ -419,11 +421,13 @@ namespace vefs
                 ++count.coarse;
             }
         }
-    const MPI_Comm comm =
-      fields.dof_handler.get_triangulation().get_communicator();
-    count.coarse = Utilities::MPI::sum(count.coarse, comm);
-    count.total  = Utilities::MPI::sum(count.total, comm);
-    return count;
+    // Both counts in one reduction: it runs at every refinement cycle.
+    std::array<unsigned int, 2> counts = {{count.coarse, count.total}};
+    Utilities::MPI::sum(
+      ArrayView<const unsigned int>(counts.data(), counts.size()),
+      fields.dof_handler.get_triangulation().get_communicator(),
+      ArrayView<unsigned int>(counts.data(), counts.size()));
+    return {counts[0], counts[1]};
   }
 
   template <int dim>
