@@ -14,6 +14,9 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/numerics/vector_tools_boundary.h>
 
+#include <Epetra_CrsGraph.h>
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_Map.h>
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <vefs/free_surface.h>
@@ -52,41 +55,58 @@ namespace vefs
     };
 
     /**
-     * Set @p owned to the rows of @p pattern that this rank owns, after
-     * SparsityTools::distribute_sparsity_pattern() has added the other
-     * ranks' entries to them. Given the ghost rows as well, deal.II builds
+     * Make @p matrix a block matrix of the entries of @p pattern in the rows
+     * this rank owns, after SparsityTools::distribute_sparsity_pattern() has
+     * added the other ranks' entries to them: each block an Epetra graph
+     * filled row by row. Given the ghost rows as well, deal.II would build
      * Epetra maps of them and a second graph for the entries that the
-     * assembly adds to other ranks' rows: on two ranks the Epetra matrices'
-     * setup took longer than on one. Without them, Epetra sends those
-     * entries itself when the matrix is compressed. (An output argument:
-     * deal.II's block patterns cannot be copied once they have blocks.)
+     * assembly adds to other ranks' rows; a copy of the owned rows took a
+     * tenth of the setup on two ranks. Without them, Epetra sends those
+     * entries itself when the matrix is compressed.
      */
     void
-    copy_owned_rows(const BlockDynamicSparsityPattern &pattern,
-                    const std::vector<IndexSet>       &owned_partitioning,
-                    BlockDynamicSparsityPattern       &owned)
+    make_owned_rows_matrix(const BlockDynamicSparsityPattern &pattern,
+                           const std::vector<IndexSet> &owned_partitioning,
+                           const MPI_Comm               comm,
+                           TrilinosWrappers::BlockSparseMatrix &matrix)
     {
-      owned.reinit(owned_partitioning);
-      std::vector<types::global_dof_index> columns;
-      for (unsigned int i = 0; i < owned_partitioning.size(); ++i)
-        for (unsigned int j = 0; j < owned_partitioning.size(); ++j)
+      using EpetraIndex         = TrilinosWrappers::types::int_type;
+      const unsigned int      n = owned_partitioning.size();
+      std::vector<Epetra_Map> maps;
+      for (const IndexSet &owned : owned_partitioning)
+        maps.push_back(owned.make_trilinos_map(comm, false));
+      matrix.clear();
+      matrix.reinit(n, n);
+      std::vector<int>         lengths;
+      std::vector<EpetraIndex> columns;
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
           {
-            const DynamicSparsityPattern &from = pattern.block(i, j);
+            const DynamicSparsityPattern &block = pattern.block(i, j);
+            lengths.clear();
+            for (const types::global_dof_index row : owned_partitioning[i])
+              lengths.push_back(block.row_length(row));
+            Epetra_CrsGraph graph(Copy, maps[i], lengths.data(), true);
+            unsigned int    k = 0;
             for (const types::global_dof_index row : owned_partitioning[i])
               {
-                const auto length = from.row_length(row);
+                const int length = lengths[k++];
                 if (length == 0)
                   continue;
-                columns.clear();
-                auto entry = from.begin(row);
-                for (types::global_dof_index k = 0; k < length; ++k, ++entry)
-                  columns.push_back(entry->column());
-                owned.block(i, j).add_entries(row,
-                                              columns.begin(),
-                                              columns.end(),
-                                              true);
+                // Counted: the pattern's end(row) searches for the next row.
+                columns.resize(length);
+                auto entry = block.begin(row);
+                for (int c = 0; c < length; ++c, ++entry)
+                  columns[c] = entry->column();
+                graph.InsertGlobalIndices(static_cast<EpetraIndex>(row),
+                                          length,
+                                          columns.data());
               }
+            graph.FillComplete(maps[j], maps[i]);
+            graph.OptimizeStorage();
+            matrix.block(i, j).reinit(Epetra_CrsMatrix(Copy, graph), false);
           }
+      matrix.collect_sizes();
     }
 
     /**
@@ -359,23 +379,13 @@ namespace vefs
                                                dof_handler.locally_owned_dofs(),
                                                comm,
                                                touched_dofs);
-    // On one rank all rows are owned: no copy.
-    const bool several_ranks = Utilities::MPI::n_mpi_processes(comm) > 1;
-    BlockDynamicSparsityPattern owned_copy;
-    if (several_ranks)
-      copy_owned_rows(pattern, owned_partitioning, owned_copy);
-    const BlockDynamicSparsityPattern &owned_pattern =
-      several_ranks ? owned_copy : pattern;
-    system_matrix.clear();
-    system_matrix.reinit(owned_partitioning, owned_pattern, comm);
+    make_owned_rows_matrix(pattern, owned_partitioning, comm, system_matrix);
 
     // The Schur approximation couples the pressures as the pressure block of
-    // the system does (cells and ghost penalty alike).
+    // the system does (cells and ghost penalty alike): the two share the
+    // Epetra graph.
     schur_matrix.clear();
-    schur_matrix.reinit(owned_partitioning[1],
-                        owned_partitioning[1],
-                        owned_pattern.block(1, 1),
-                        comm);
+    schur_matrix.reinit(system_matrix.block(1, 1));
 
     system_rhs.reinit(owned_partitioning, comm);
     lumped_pressure_mass.reinit(owned_partitioning, comm);
