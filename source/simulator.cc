@@ -639,8 +639,8 @@ namespace vefs
       TimerOutput::Scope scope(timer, "3 diffusion: preconditioner");
       flow.build_preconditioner();
     }
-    // Contact walls: solve again while the contact set changes (design
-    // section 4); a few times at the most. Until a solve leaves the set
+    // Contact walls: solve again while the contact set changes (doc/method.md,
+    // "Walls"); a few times at the most. Until a solve leaves the set
     // unchanged the solves only have to tell which nodes touch: loosely;
     // the step ends with a full solve that leaves the set unchanged too.
     bool full_solve =

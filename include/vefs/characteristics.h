@@ -34,8 +34,9 @@ namespace vefs
   };
 
   /**
-   * Advection step of the splitting (design section 2, step 1): every field
-   * takes at a node x its old value at the foot of the characteristic,
+   * Advection step of the splitting (doc/method.md, "One time step",
+   * step 2): every field takes at a node x its old value at the foot of the
+   * characteristic,
    *   X(x) = x - tau u(x - tau/2 u(x)),
    * a two-stage trace, second order in the foot position (with the
    * gradient-augmented level set a four-stage Runge-Kutta trace, whose

@@ -3,6 +3,7 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <vefs/errors.h>
 #include <vefs/level_set_history.h>
 #include <vefs/postprocessing.h>
 #include <vefs/transported_fields.h>
@@ -14,13 +15,6 @@
 
 namespace vefs
 {
-  /** A checkpoint that cannot be resumed: the run stops with this message. */
-  class CheckpointError : public std::runtime_error
-  {
-  public:
-    using std::runtime_error::runtime_error;
-  };
-
   /**
    * What the time loop carries from one step to the next besides the mesh
    * and the transported fields. Of the statistics only the step, time, tau,

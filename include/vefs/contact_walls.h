@@ -17,11 +17,11 @@
 namespace vefs
 {
   /**
-   * The seed's Signorini-like walls (design section 4): the liquid may leave
-   * a contact wall but never cross it, u.n <= 0, with a compressive normal
-   * traction where u.n = 0. Solved as an active set on the velocity degrees
-   * of freedom normal to the wall: every wet one starts in contact (u.n = 0
-   * imposed); after a solve, one whose reaction pulls the liquid toward the
+   * The seed's Signorini-like walls (doc/method.md, "Walls"): the liquid may
+   * leave a contact wall but never cross it, u.n <= 0, with a compressive
+   * normal traction where u.n = 0. Solved as an active set on the velocity
+   * degrees of freedom normal to the wall: every wet one starts in contact (u.n
+   * = 0 imposed); after a solve, one whose reaction pulls the liquid toward the
    * wall is released, and a released one whose velocity crosses the wall is
    * put back, until the set stops changing. The next step's set starts from
    * this one: a wall node released at the end of a step starts released

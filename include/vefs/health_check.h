@@ -10,8 +10,8 @@
 namespace vefs
 {
   /**
-   * The checks done at every step (design: a run never ends with exit 0
-   * and results that are not finite). Each returns what is wrong, naming
+   * The checks done at every step (doc/reliability.md: a run never ends with
+   * exit 0 and results that are not finite). Each returns what is wrong, naming
    * the quantity and the entries to change, or an empty string; all are
    * collective over the ranks of @p fields and agree on every rank.
    */

@@ -10,9 +10,9 @@ namespace vefs
   constexpr types::material_id liquid_material_id = 1;
 
   /**
-   * Refinement levels tied to the free surface (design section 2, step 2):
-   * the finest level in a band around psi = 0, the bulk level inside the
-   * liquid, the minimum level in the empty cavity.
+   * Refinement levels tied to the free surface (doc/method.md, "One time step",
+   * step 5): the finest level in a band around psi = 0, the bulk level inside
+   * the liquid, the minimum level in the empty cavity.
    */
   class MeshLevels
   {

@@ -4,6 +4,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <vefs/errors.h>
+
 #include <array>
 #include <stdexcept>
 #include <string>
@@ -11,16 +13,6 @@
 
 namespace vefs
 {
-  /**
-   * A problem with the user's input: reported as one message naming the
-   * entry and what is allowed, then the run stops with a non-zero status.
-   */
-  class InputError : public std::runtime_error
-  {
-  public:
-    using std::runtime_error::runtime_error;
-  };
-
   /** A point from the comma-separated coordinates of an entry. */
   template <int dim>
   dealii::Point<dim>
@@ -43,7 +35,8 @@ namespace vefs
     contact
   };
 
-  /** The regime selected by the material parameters (design section 1). */
+  /** The regime selected by the material parameters (doc/method.md,
+   * "Equations"). */
   enum class Regime
   {
     newtonian,
@@ -70,7 +63,7 @@ namespace vefs
 
   /**
    * How the stress is advanced by the velocity gradient of the step, after
-   * the diffusion step (design section 2, step 4).
+   * the diffusion step (doc/method.md, "One time step", step 9).
    */
   enum class StressUpdate
   {

@@ -15,7 +15,8 @@
 
 namespace vefs
 {
-  /** Functionals of the liquid after one time step (design section 7). */
+  /** Functionals of the liquid after one time step (doc/method.md, "Outputs").
+   */
   template <int dim>
   struct StepStatistics
   {

@@ -12,8 +12,9 @@ namespace vefs
   using namespace dealii;
 
   /**
-   * The constitutive law of design section 1 as the diffusion step sees it
-   * at one point, once sigma is eliminated (design section 2, step 3):
+   * The constitutive law of doc/method.md ("Equations") as the diffusion
+   * step sees it at one point, once sigma is eliminated (doc/method.md, "One
+   * time step", step 7):
    *   sigma^{n+1}(u) = k [sigma* + tau (grad u sigma* + sigma* grad u^T)
    *                       + tau (2 eta_p / lambda) eps(u)],
    *   k = lambda / (lambda + alpha tau),

@@ -26,7 +26,7 @@ namespace vefs
 {
   /**
    * A free-surface flow in a box-shaped cavity, advanced by the order-one
-   * splitting of the design notes (section 2): advection along
+   * splitting of doc/method.md ("One time step"): advection along
    * characteristics, mesh adaptation to the new surface, diffusion on the
    * liquid cells.
    */
@@ -123,7 +123,8 @@ namespace vefs
     choose_prescribed_time_step(const double time) const;
 
     /**
-     * Steps 3 and 4 of the design, then the new velocity extended beyond
+     * Steps 7-9 of doc/method.md ("One time step"): the Stokes step, the
+     * stress update, then the new velocity extended beyond
      * the liquid for the next characteristics, at least @p expected_cfl
      * cells wide. Records the Krylov iterations and what the stress update
      * reports in @p statistics.

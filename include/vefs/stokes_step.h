@@ -12,6 +12,7 @@
 
 #include <vefs/constraint_distribution.h>
 #include <vefs/contact_walls.h>
+#include <vefs/errors.h>
 #include <vefs/flow_elements.h>
 #include <vefs/ghost_penalty.h>
 #include <vefs/liquid_domain.h>
@@ -23,16 +24,9 @@
 
 namespace vefs
 {
-  /** The diffusion step failed: the run stops with this message. */
-  class SolverError : public std::runtime_error
-  {
-  public:
-    using std::runtime_error::runtime_error;
-  };
-
   /**
-   * The diffusion (correction) step of the splitting, design section 2,
-   * step 3: the Stokes-like problem
+   * The diffusion (correction) step of the splitting, doc/method.md,
+   * "One time step", step 7: the Stokes-like problem
    *   rho (u - u*)/tau - div(2 mu eps(u) + k sigma*) + grad p = rho g,
    *   div u = 0
    * on the liquid domain psi < 0, cut out of the cells the free surface
@@ -77,9 +71,9 @@ namespace vefs
 
     /**
      * With contact walls: update the contact set from the last solution
-     * (design section 4). Returns true if it changed; then the constraints
-     * and the rows of the changed unknowns are remade, and the step must be
-     * solved again (not assembled).
+     * (doc/method.md, "Walls"). Returns true if it changed; then the
+     * constraints and the rows of the changed unknowns are remade, and the step
+     * must be solved again (not assembled).
      */
     bool
     update_contact(const TransportedFields<dim> &fields, const double tau);

@@ -22,8 +22,8 @@ namespace vefs
   };
 
   /**
-   * Step 4 of the design (section 2): the new stress sigma^{n+1} at the
-   * nodes of liquid cells, from the advected stress sigma* that @p fields
+   * Step 9 of doc/method.md ("One time step"): the new stress sigma^{n+1} at
+   * the nodes of liquid cells, from the advected stress sigma* that @p fields
    * holds there and the new velocity (already copied into @p fields). Each
    * liquid cell carries the stress of its vertices by a velocity gradient:
    * a full cell by its Q1 gradient at the vertex, a cut cell at all its
