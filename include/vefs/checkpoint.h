@@ -5,7 +5,7 @@
 
 #include <vefs/errors.h>
 #include <vefs/level_set_history.h>
-#include <vefs/postprocessing.h>
+#include <vefs/statistics.h>
 #include <vefs/transported_fields.h>
 
 #include <stdexcept>

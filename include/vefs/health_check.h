@@ -2,7 +2,7 @@
 #define vefs_health_check_h
 
 #include <vefs/parameters.h>
-#include <vefs/postprocessing.h>
+#include <vefs/statistics.h>
 #include <vefs/transported_fields.h>
 
 #include <string>

@@ -7,8 +7,7 @@
 #include <deal.II/distributed/tria.h>
 
 #include <vefs/box_mesh_locator.h>
-#include <vefs/checkpoint.h>
-#include <vefs/level_set_history.h>
+#include <vefs/checkpoint_schedule.h>
 #include <vefs/liquid_domain.h>
 #include <vefs/mesh_adaptation.h>
 #include <vefs/output_directory.h>
@@ -16,29 +15,26 @@
 #include <vefs/postprocessing.h>
 #include <vefs/rheology.h>
 #include <vefs/stokes_step.h>
+#include <vefs/surface_tracker.h>
+#include <vefs/time_control.h>
 #include <vefs/transported_fields.h>
+#include <vefs/velocity_source.h>
 #include <vefs/visualization.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 
 namespace vefs
 {
   /**
-   * A free-surface flow in a box-shaped cavity, advanced by the order-one
-   * splitting of doc/method.md ("One time step"): advection along
-   * characteristics, mesh adaptation to the new surface, diffusion on the
-   * liquid cells.
+   * A free-surface flow in a box-shaped cavity, advanced by the splitting
+   * of doc/method.md ("One time step"): advection along characteristics,
+   * mesh adaptation to the new surface, the new velocity on the liquid
+   * cells. run() is that loop; the pieces are the time control, the
+   * surface tracker and the velocity source (the flow step or a prescribed
+   * velocity).
    */
-  /** How a run ended, if not by an error. */
-  struct RunEnd
-  {
-    /** The exit status: 0, or 128 + the signal that stopped the run. */
-    int status = 0;
-    /** Where the run stopped and how to continue it; "" if it finished. */
-    std::string message;
-  };
-
   template <int dim>
   class Simulator
   {
@@ -57,8 +53,15 @@ namespace vefs
 
   private:
     /**
+     * The cavity, the initial state (or that of the checkpoint) and its
+     * statistics row; its liquid domain.
+     */
+    LiquidDomain<dim>
+    start();
+
+    /**
      * The statistics columns of what this scene has: the shape error, the
-     * stress, the contact walls, the probe.
+     * stress, the contact walls, the band placement, the probe.
      */
     void
     add_scene_columns();
@@ -70,8 +73,23 @@ namespace vefs
     set_initial_state();
 
     /** The state of the checkpoint: mesh, fields, statistics, outputs. */
-    StepStatistics<dim>
+    void
     resume();
+
+    /**
+     * The next step: the velocity source's, landed on the end and output
+     * times, checked while the state is still good (else the run stops with
+     * the state on @p domain); then started.
+     */
+    void
+    start_step(const LiquidDomain<dim> &domain);
+
+    /**
+     * Steps 7-9 on the new liquid @p domain: the velocity source's new
+     * velocity (and stress); the run stops if it fails.
+     */
+    void
+    advance_velocity(const LiquidDomain<dim> &domain);
 
     /**
      * After a step: write a checkpoint if one is due (by the step number,
@@ -79,76 +97,11 @@ namespace vefs
      * by this invocation); a returned RunEnd stops the run.
      */
     std::optional<RunEnd>
-    checkpoint_if_due(const StepStatistics<dim> &statistics,
-                      const unsigned int         steps_done);
-
-    /**
-     * The next time step from the speeds of the @p last one: 'Time step',
-     * bounded by the target CFL number and the largest strain per step.
-     */
-    double
-    choose_time_step(const StepStatistics<dim> &last) const;
-
-    /** The length of the next step, and the flow's step it came from. */
-    struct StepLength
-    {
-      double tau;
-      /** The step the CFL and strain bounds allow, before the end time and
-       * output times shorten it (the health check watches it). */
-      double controlled;
-    };
-
-    /** The next step after @p statistics: the flow's (or the prescribed
-     * velocity's) step, shortened to land on the end and output times. */
-    StepLength
-    choose_step_length(const StepStatistics<dim> &statistics) const;
-
-    /** The first multiple of 'Output/Time interval' after @p time. */
-    double
-    next_output_time(const double time) const;
-
-    /** Whether this step writes visualization files. */
-    bool
-    is_output_step(const StepStatistics<dim> &statistics) const;
-
-    /** Largest prescribed speed in the liquid at @p time. */
-    double
-    prescribed_speed(const double time) const;
-
-    /**
-     * Time step with a prescribed velocity: the target CFL number holds
-     * for the speed over the whole step, not only at its start.
-     */
-    double
-    choose_prescribed_time_step(const double time) const;
-
-    /**
-     * Steps 7-9 of doc/method.md ("One time step"): the Stokes step, the
-     * stress update, then the new velocity extended beyond
-     * the liquid for the next characteristics, at least @p expected_cfl
-     * cells wide. Records the Krylov iterations and what the stress update
-     * reports in @p statistics.
-     */
-    void
-    diffusion_step(const LiquidDomain<dim> &domain,
-                   const double             new_time,
-                   const double             tau,
-                   const double             expected_cfl,
-                   StepStatistics<dim>     &statistics);
-
-    /** The regime and the mode, for the banner. */
-    std::string
-    description() const;
-
-    bool
-    is_last_step(const StepStatistics<dim> &statistics) const
-    {
-      return statistics.time >= parameters.end_time * (1 - 1e-12);
-    }
+    checkpoint_if_due(const unsigned int steps_done);
 
     /** Measure, check the health of and write the state of a step. */
     void
-    report(StepStatistics<dim> &statistics, const LiquidDomain<dim> &domain);
+    report(const LiquidDomain<dim> &domain);
 
     /**
      * Stop the run at @p step with @p problem: write the current state if
@@ -156,11 +109,10 @@ namespace vefs
      * SolverError naming the step and what was kept.
      */
     [[noreturn]] void
-    stop(const unsigned int         step,
-         const StepStatistics<dim> &statistics,
-         const std::string         &problem,
-         const LiquidDomain<dim>   &domain,
-         const bool                 state_is_good);
+    stop(const unsigned int       step,
+         const std::string       &problem,
+         const LiquidDomain<dim> &domain,
+         const bool               state_is_good);
 
     const Parameters &parameters;
     /** The parameters as run, for parameters.prm and the checkpoints. */
@@ -177,26 +129,22 @@ namespace vefs
     BoundingBox<dim>                          cavity;
     std::unique_ptr<BoxMeshLocator<dim>>      locator;
     MeshLevels                                levels;
+    TimeControl                               time;
     TransportedFields<dim>                    fields;
-    LevelSetHistory<dim>                      level_set_history;
-    StokesStep<dim>                           flow;
-    StatisticsFile<dim>                       statistics_file;
-    Visualization<dim>                        visualization;
-    std::unique_ptr<Function<dim>>            prescribed_velocity;
-    std::unique_ptr<Function<dim>>            exact_final_level_set;
-    double                                    initial_volume = 0;
-    /** The initial volume plus what entered through the walls so far. */
-    double       expected_volume  = 0;
+    /** Made with the cavity, which its locator needs. */
+    std::unique_ptr<SurfaceTracker<dim>> surface;
+    StokesStep<dim>                      flow;
+    std::unique_ptr<VelocitySource<dim>> velocity;
+    /** The row of the last step: its speeds choose the next step. */
+    StepStatistics<dim>            statistics;
+    StatisticsFile<dim>            statistics_file;
+    Visualization<dim>             visualization;
+    CheckpointSchedule             checkpoints;
+    std::unique_ptr<Function<dim>> exact_final_level_set;
     unsigned int last_output_step = numbers::invalid_unsigned_int;
     Timer        wall_clock;
     /** The wall time of the run before it was resumed. */
     double wall_time_offset = 0;
-    Timer  since_checkpoint;
-    /** Solves per step with contact walls, at the most. */
-    static constexpr unsigned int max_contact_iterations = 10;
-    /** The shortest step before an end or output time, as a fraction of the
-     * step before it. */
-    static constexpr double min_step_fraction = 0.25;
   };
 } // namespace vefs
 
