@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <vefs/constraint_distribution.h>
 
 namespace vefs
@@ -40,6 +42,10 @@ namespace vefs
             }
           entry_start.push_back(entry_places.size());
         }
+    // The fallback is collective: every rank takes it if one must.
+    complete =
+      !Utilities::MPI::logical_or(!complete,
+                                  owned.block(0).get_mpi_communicator());
   }
 
   void

@@ -28,8 +28,9 @@ namespace vefs
      * Look up the places of the owned constrained unknowns of
      * @p constraints (closed) in vectors of the layout of @p owned, and
      * those of the unknowns they depend on in vectors of the layout of
-     * @p ghosted. If @p ghosted lacks one of those, distribute() falls back
-     * to deal.II's.
+     * @p ghosted. If @p ghosted lacks one of those on any rank,
+     * distribute() falls back to deal.II's on every rank (it is
+     * collective). Collective.
      */
     void
     reinit(const AffineConstraints<double> &constraints,
