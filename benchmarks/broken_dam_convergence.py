@@ -106,7 +106,7 @@ def main(argv=None):
         "",
         "## Largest relative error of the residual height, tau <= 2",
         "",
-        "Reference: `../shared/reference/martin_moyce_1952_n2_2_height.csv`."
+        "Reference: `data/martin_moyce_1952_n2_2_height.csv`."
         " Rows: finest level L (finest cell a/%.1f at L = 6); columns: time "
         "step; in brackets the largest CFL number of the run and its wall "
         "time (1 rank)." % (bdr.cmm.DEFAULT_A / (0.28575 / 2 / 64)),
@@ -125,7 +125,7 @@ def main(argv=None):
 
     lines += ["", "## Surge front: largest relative error after the fitted "
               "shift s of T (1 <= T <= 3), and s", "",
-              "Reference: `../shared/reference/martin_moyce_1952_n2_2_front.csv`"
+              "Reference: `data/martin_moyce_1952_n2_2_front.csv`"
               " (see `scripts/compare_martin_moyce.py`).", "",
               "| L | " + " | ".join("tau = %g ms" % (t * 1000)
                                     for t in args.time_steps) + " |",

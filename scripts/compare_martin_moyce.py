@@ -11,7 +11,7 @@ Reads OUTPUT_DIR/statistics (columns time, floor_extent, wall_height,
 volume_change) and the reference curves
   martin_moyce_1952_n2_2_front.csv   Z = z/a        against T   = t sqrt(2g/a)
   martin_moyce_1952_n2_2_height.csv  H = h/(2a)     against tau = t sqrt(g/a)
-from --reference-dir (default: <repo root>/../shared/reference).
+from --reference-dir (default: <repo root>/data).
 
 Printed (few significant digits, no wall times or iteration counts, so that
 the output can be compared with numdiff across machines and rank counts):
@@ -37,7 +37,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vefs_stats import read_statistics, read_csv_reference, interpolate, column  # noqa: E402
 
 REPO_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DEFAULT_REFERENCE_DIR = os.path.join(REPO_ROOT, "..", "shared", "reference")
+DEFAULT_REFERENCE_DIR = os.path.join(REPO_ROOT, "data")
 FRONT_FILE = "martin_moyce_1952_n2_2_front.csv"
 HEIGHT_FILE = "martin_moyce_1952_n2_2_height.csv"
 
@@ -266,7 +266,7 @@ def parse_args(argv=None):
                    help="gravity [m/s^2] (default %(default)s)")
     p.add_argument("--reference-dir", default=DEFAULT_REFERENCE_DIR,
                    help="directory with the Martin & Moyce CSV files "
-                   "(default <repo>/../shared/reference)")
+                   "(default <repo>/data)")
     p.add_argument("--max-shift", type=float, default=0.3,
                    help="largest front time shift tried, in T units "
                    "(default %(default)s)")

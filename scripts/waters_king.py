@@ -2,7 +2,7 @@
 """Start-up of planar Poiseuille flow of an Oldroyd-B fluid: the exact
 series of Waters & King (1970), and its comparison with a vefs run.
 
-Reference: ../shared/reference/waters_king_1970.md (next to the repository).
+Reference: data/waters_king_1970.md.
 Channel -h <= y <= h, fluid at rest at t = 0, constant body force (pressure
 gradient) K = -dp/dx switched on at t = 0, no-slip walls; eta0 = eta_s +
 eta_p, beta = eta_s / eta0, E = lambda eta0 / (rho h^2), T = t / lambda,
@@ -101,7 +101,7 @@ DEFAULT_BOUND = 0.05
 #: the steady centreline velocity U(0, infinity), the scale of the errors
 STEADY_CENTRELINE = 1.5
 
-# check values of ../shared/reference/waters_king_1970.md: centreline
+# check values of data/waters_king_1970.md: centreline
 # U(0,T) for E = 1, beta = 1/9, and the first overshoot (T, U)
 CHECK_E = 1.0
 CHECK_BETA = 1.0 / 9.0

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Checker of the broken_dam_2d test: the Martin & Moyce (1952) comparison
-(../shared/reference/martin_moyce_1952_n2_2_*.csv) of the run in sys.argv[1].
+(data/martin_moyce_1952_n2_2_*.csv) of the run in sys.argv[1].
 The test mesh is one level coarser than prm/broken_dam_2d.prm, so the verdict
 thresholds are those measured acceptable at this resolution: residual height
 within 5%, front within 8% after a time shift of at most 0.3, volume kept

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Checker of the broken_dam_2d_large_steps test: the Martin & Moyce (1952)
-comparison (../shared/reference/martin_moyce_1952_n2_2_*.csv) of a run at
+comparison (data/martin_moyce_1952_n2_2_*.csv) of a run at
 CFL numbers up to 6.5 (sys.argv[1]). Verdict thresholds: the front within
 5% after a time shift of at most 0.3 (the criterion of the default scene;
 with a band or extension narrower than the CFL number the front was held

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checker of the waters_king_2d test: start-up of planar Poiseuille flow
 of an Oldroyd-B fluid against the exact series of Waters & King (1970)
-(../shared/reference/waters_king_1970.md, scripts/waters_king.py).
+(data/waters_king_1970.md, scripts/waters_king.py).
 
 Usage: waters_king_2d.py OUTPUT_DIR [--bound 0.05]
 
