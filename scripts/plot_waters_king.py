@@ -21,8 +21,7 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import waters_king  # noqa: E402
+from vefs_tools import waters_king
 
 
 def main(argv=None):

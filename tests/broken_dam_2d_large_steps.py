@@ -7,11 +7,9 @@ with a band or extension narrower than the CFL number the front was held
 back: 7.7%), the residual height within 5% (first-order time error at 2 ms
 steps: 3.8% measured), volume kept to 0.5%. The printed errors themselves
 are compared by numdiff."""
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from compare_martin_moyce import main  # noqa: E402
+from vefs_tools.martin_moyce import main
 
 sys.exit(main([sys.argv[1], "--height-threshold", "0.05",
                "--front-threshold", "0.05", "--volume-threshold", "0.005"]))

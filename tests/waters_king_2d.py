@@ -25,11 +25,9 @@ benchmarks/viscoelastic_convergence.py. The exit status is non-zero only
 if the output cannot be read (missing file, column or parameter); a
 failed check shows as NO, which makes numdiff fail.
 """
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from waters_king import main  # noqa: E402
+from vefs_tools.waters_king import main
 
 if __name__ == "__main__":
     if len(sys.argv) < 2:
