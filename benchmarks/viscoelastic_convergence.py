@@ -25,7 +25,7 @@ to <results-dir>/<run>.prm, <run> = <scene>[_<tag>]_conv_L<L>_dt<tau>, with
   Output / Interval               = 0      (no visualization files)
   Output directory                = <results-dir>/<run>
 and run on one rank from the repository root by the helper of the other
-studies (benchmarks/broken_dam_refinement.py run_serial_scene: log in
+studies (scripts/vefs_tools/run.py run_serial_scene: log in
 <name>.log, wall time of the whole process and git revision of the
 executable in <name>.json, to which the study adds the CPU time of the
 process, the 1-minute load average before the run, the --set entries and
@@ -40,10 +40,10 @@ half and a quarter of it. --tag names a variant (e.g. one made with
 
 Measures (the analysis is that of the test checkers, imported from
 scripts/):
-  waters-king (scripts/waters_king.py compare_run): the largest
+  waters-king (scripts/vefs_tools/waters_king.py compare_run): the largest
       |U_sim - U_exact| / 1.5 of the probe (centreline) velocity over the
       statistics rows with 0 < T = t/lambda <= --t-max (default 10);
-  shear-wave (scripts/shear_wave.py analyse_run): |frequency error|
+  shear-wave (scripts/vefs_tools/shear_wave.py analyse_run): |frequency error|
       |w_sim - w| / w from the zero crossings, and the amplitude loss per
       period from the extrema of the full half periods.
 The table also gives the number of steps, the largest CFL number of the
