@@ -19,13 +19,10 @@ import argparse
 import os
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-sys.path.insert(0, HERE)
-from broken_dam_refinement import (apply_settings, set_entry,  # noqa: E402
-                                   run_vefs, vefs_command)
-from vefs_stats import read_statistics  # noqa: E402
+from vefs_tools import REPO_ROOT as ROOT
+from vefs_tools.prm import apply_settings, set_entry
+from vefs_tools.run import run_vefs, vefs_command
+from vefs_tools.statistics import read_statistics
 
 
 def make_prm(text, level, end_time, output_dir, settings):
@@ -88,10 +85,11 @@ def main():
             prm_file = os.path.join(args.results_dir, name + ".prm")
             with open(prm_file, "w") as f:
                 f.write(make_prm(base, level, args.end_time, out, args.set))
-            status, wall = run_vefs(
+            run = run_vefs(
                 vefs_command(os.path.abspath(args.vefs), args.np, prm_file),
-                os.path.join(args.results_dir, name + ".log"), args.np)
-            if status != 0:
+                os.path.join(args.results_dir, name + ".log"))
+            wall = run.wall
+            if run.returncode != 0:
                 print("%s failed (see %s.log)" % (name, name), file=sys.stderr)
                 continue
             with open(wall_file, "w") as f:

@@ -14,22 +14,18 @@ Each run is the scene with Maximum level = L (finest cells 0.1 m / 2^L at
 the surface), Bulk level = L - 1, the given `Time step` (an upper bound:
 the CFL target may shorten it) and the end time (after the lift-off),
 on one rank, without visualization output; its output goes to
-<results-dir>/L<L>_tau<tau>/. The events come from scripts/bounce_events.py
+<results-dir>/L<L>_tau<tau>/. The events come from scripts/vefs_tools/bounce.py
 (the checker of the test bouncing_ball_2d_stiff). --no-run only analyses
 the runs already there.
 """
 import argparse
 import os
-import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-sys.path.insert(0, HERE)
-from broken_dam_refinement import (apply_settings, set_entry,  # noqa: E402
-                                   run_serial_scene)
-from bounce_events import bounce_events  # noqa: E402
-from vefs_stats import read_statistics  # noqa: E402
+from vefs_tools import REPO_ROOT as ROOT
+from vefs_tools.bounce import bounce_events
+from vefs_tools.prm import apply_settings, set_entry
+from vefs_tools.run import run_serial_scene
+from vefs_tools.statistics import read_statistics
 
 
 def run_name(level, tau):
@@ -92,7 +88,7 @@ def main():
         "",
         "Scene `prm/bouncing_ball_2d_stiff.prm` (G = 2000 Pa, contact floor), "
         "run by `benchmarks/bouncing_ball_study.py` on one rank to t = %g s; "
-        "events from `scripts/bounce_events.py`. h: finest cells at the "
+        "events from `scripts/vefs_tools/bounce.py`. h: finest cells at the "
         "surface; tau: the `Time step` bound (the CFL target shortens some "
         "steps). Heights in mm, times in ms; energy lost: 1 - E(lift-off) / "
         "E(0), all of it numerical (the material has no dissipation)."

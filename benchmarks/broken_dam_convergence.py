@@ -26,12 +26,11 @@ import json
 import os
 import sys
 
-REPO_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(REPO_ROOT, "scripts"))
-sys.path.insert(0, os.path.join(REPO_ROOT, "benchmarks"))
-import compare_martin_moyce as cmm  # noqa: E402
-import broken_dam_refinement as bdr  # noqa: E402
-from vefs_stats import interpolate  # noqa: E402
+import broken_dam_refinement as bdr
+from vefs_tools import martin_moyce as cmm
+from vefs_tools.prm import set_entry
+from vefs_tools.run import resolve, rel, run_serial_scene
+from vefs_tools.statistics import interpolate
 
 PREFIX = "broken_dam_2d_conv"
 
@@ -42,8 +41,8 @@ def run_name(level, tau):
 
 def make_prm(text, level, tau, output_dir):
     text = bdr.make_prm(text, level, output_dir)
-    text = bdr.set_entry(text, ["Time"], "Time step", repr(tau))
-    text = bdr.set_entry(text, ["Output"], "Interval", "0")
+    text = set_entry(text, ["Time"], "Time step", repr(tau))
+    text = set_entry(text, ["Output"], "Interval", "0")
     return text
 
 
@@ -72,10 +71,10 @@ def main(argv=None):
     p.add_argument("--no-run", action="store_true")
     args = p.parse_args(argv)
 
-    vefs = bdr.resolve(args.vefs)
-    results = bdr.resolve(args.results_dir)
+    vefs = resolve(args.vefs)
+    results = resolve(args.results_dir)
     os.makedirs(results, exist_ok=True)
-    with open(bdr.resolve(args.prm)) as f:
+    with open(resolve(args.prm)) as f:
         base = f.read()
 
     runs = {}
@@ -84,7 +83,7 @@ def main(argv=None):
             name = run_name(level, tau)
             out_dir = os.path.join(results, name)
             info_file = os.path.join(results, name + ".json")
-            if not args.no_run and not bdr.run_serial_scene(
+            if not args.no_run and not run_serial_scene(
                     vefs, results, name, make_prm(base, level, tau, out_dir)):
                 return 1
             with open(info_file) as f:
@@ -102,14 +101,14 @@ def main(argv=None):
         "minimum max(L-4, 0); fixed time step)."
         % (datetime.date.today().isoformat(),
            runs[(args.levels[0], args.time_steps[0])]["revision"],
-           bdr.rel(bdr.resolve(args.prm))),
+           rel(resolve(args.prm))),
         "",
         "## Largest relative error of the residual height, tau <= 2",
         "",
-        "Reference: `../shared/reference/martin_moyce_1952_n2_2_height.csv`."
+        "Reference: `data/martin_moyce_1952_n2_2_height.csv`."
         " Rows: finest level L (finest cell a/%.1f at L = 6); columns: time "
         "step; in brackets the largest CFL number of the run and its wall "
-        "time (1 rank)." % (bdr.cmm.DEFAULT_A / (0.28575 / 2 / 64)),
+        "time (1 rank)." % (cmm.DEFAULT_A / (0.28575 / 2 / 64)),
         "",
         "| L | " + " | ".join("tau = %g ms" % (t * 1000)
                               for t in args.time_steps) + " |",
@@ -125,7 +124,7 @@ def main(argv=None):
 
     lines += ["", "## Surge front: largest relative error after the fitted "
               "shift s of T (1 <= T <= 3), and s", "",
-              "Reference: `../shared/reference/martin_moyce_1952_n2_2_front.csv`"
+              "Reference: `data/martin_moyce_1952_n2_2_front.csv`"
               " (see `scripts/compare_martin_moyce.py`).", "",
               "| L | " + " | ".join("tau = %g ms" % (t * 1000)
                                     for t in args.time_steps) + " |",
@@ -166,8 +165,8 @@ def main(argv=None):
         lines.append("")
 
     text = "\n".join(lines) + "\n"
-    with open(bdr.resolve(args.doc) if os.path.exists(os.path.dirname(
-            bdr.resolve(args.doc))) else args.doc, "w") as f:
+    with open(resolve(args.doc) if os.path.exists(os.path.dirname(
+            resolve(args.doc))) else args.doc, "w") as f:
         f.write(text)
     print(text)
     return 0

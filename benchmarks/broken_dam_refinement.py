@@ -33,105 +33,18 @@ import datetime
 import json
 import os
 import platform
-import re
 import shlex
 import shutil
-import subprocess
 import sys
-import time
 
-REPO_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(REPO_ROOT, "scripts"))
-import compare_martin_moyce as cmm  # noqa: E402
-from vefs_stats import prm_logical_lines  # noqa: E402
+from vefs_tools import REPO_ROOT
+from vefs_tools import martin_moyce as cmm
+from vefs_tools.prm import set_entry
+from vefs_tools.run import (results_directory, resolve, rel, nproc, cpu_model,
+                            git_revision, executable_info, vefs_command,
+                            run_vefs)
 
 RUN_PREFIX = "broken_dam_2d"
-
-
-# --------------------------------------------------------------------------
-# prm editing
-# --------------------------------------------------------------------------
-
-_SUBSECTION = re.compile(r"^\s*subsection\s+(.*?)\s*$", re.IGNORECASE)
-_END = re.compile(r"^\s*end\s*$", re.IGNORECASE)
-_SET = re.compile(r"^(\s*set\s+)(.*?)(\s*=\s*)(.*?)(\s*)$",
-                  re.IGNORECASE | re.DOTALL)
-
-
-def _norm(name):
-    return " ".join(name.split())
-
-
-def set_entry(text, path, name, value):
-    """Return the prm text with entry `name` in subsection `path` (a list of
-    subsection names, [] for the top level) set to `value`.
-
-    All existing 'set name = ...' lines in that subsection are changed
-    (indentation and trailing comments are kept).  If there is none, the
-    line is added at the end of the (last) matching subsection block,
-    creating missing subsections as needed.
-    """
-    path = [_norm(p) for p in path]
-    name_n = _norm(name)
-    lines = text.split("\n")
-    stack = []
-    blocks = {(): (0, len(lines))}  # path -> (start, index of 'end' line)
-    open_starts = []
-    replacements = []  # (first, last, new line)
-    for first, last, code, comment in prm_logical_lines(lines):
-        m = _SUBSECTION.match(code)
-        if m and code.strip():
-            stack.append(_norm(m.group(1)))
-            open_starts.append(first)
-            continue
-        if _END.match(code):
-            if stack:
-                blocks[tuple(stack)] = (open_starts[-1], first)
-                stack.pop()
-                open_starts.pop()
-            continue
-        m = _SET.match(code)
-        if m and stack == path and _norm(m.group(2)) == name_n:
-            indent = m.group(1)
-            sep = m.group(3)
-            new = "%s%s%s%s" % (indent, m.group(2).strip(), sep, value)
-            if comment:
-                new += (m.group(5) or "  ") + comment
-            replacements.append((first, last, new))
-
-    if replacements:
-        for first, last, new in reversed(replacements):
-            lines[first:last + 1] = [new]
-        return "\n".join(lines)
-
-    # not found: insert into the deepest existing prefix of `path`
-    depth = len(path)
-    while depth > 0 and tuple(path[:depth]) not in blocks:
-        depth -= 1
-    new_lines = []
-    for k in range(depth, len(path)):
-        new_lines.append("  " * k + "subsection " + path[k])
-    new_lines.append("  " * len(path) + "set %s = %s" % (name_n, value))
-    for k in reversed(range(depth, len(path))):
-        new_lines.append("  " * k + "end")
-    if depth == 0:
-        # top level: append at the end of the file
-        while lines and lines[-1].strip() == "":
-            lines.pop()
-        lines += [""] + new_lines + [""]
-    else:
-        end_index = blocks[tuple(path[:depth])][1]
-        lines[end_index:end_index] = new_lines
-    return "\n".join(lines)
-
-
-def apply_settings(text, settings):
-    """The prm text with each 'Section/Sub/Entry=value' of `settings` set."""
-    for setting in settings:
-        entry, value = setting.split("=", 1)
-        path = entry.split("/")
-        text = set_entry(text, path[:-1], path[-1], value)
-    return text
 
 
 def make_prm(text, level, output_dir):
@@ -141,134 +54,6 @@ def make_prm(text, level, output_dir):
                      str(max(level - 4, 0)))
     text = set_entry(text, [], "Output directory", output_dir)
     return text
-
-
-# --------------------------------------------------------------------------
-# helpers
-# --------------------------------------------------------------------------
-
-def resolve(path):
-    """path as given if it exists relative to cwd, else relative to the repo
-    root (absolute paths unchanged)."""
-    if os.path.isabs(path) or os.path.exists(path):
-        return os.path.abspath(path)
-    return os.path.join(REPO_ROOT, path)
-
-
-def rel(path):
-    try:
-        r = os.path.relpath(path, REPO_ROOT)
-    except ValueError:
-        return path
-    return path if r.startswith("..") else r
-
-
-def nproc():
-    try:
-        return len(os.sched_getaffinity(0))
-    except (AttributeError, OSError):
-        return os.cpu_count()
-
-
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.lower().startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or platform.machine()
-
-
-# what the executable is built from (files that are not scenes, docs or
-# scripts)
-_CODE_PATHS = ("include", "source", "CMakeLists.txt", "cmake")
-
-
-def git_revision(executable=None):
-    """HEAD and, if code files (include/, source/, CMake) differ from HEAD,
-    whether they changed before or after `executable` was built: changes
-    made after the build are not in the executable; changes made before may
-    be.  Changes to other files (docs, scripts, prm) are not reported."""
-    try:
-        out = subprocess.run(["git", "-C", REPO_ROOT, "rev-parse", "--short",
-                              "HEAD"], capture_output=True, text=True,
-                             timeout=10)
-        if out.returncode != 0:
-            return "unknown"
-        rev = out.stdout.strip()
-        dirty = subprocess.run(["git", "-C", REPO_ROOT, "status",
-                                "--porcelain", "--untracked-files=no",
-                                "--"] + list(_CODE_PATHS),
-                               capture_output=True, text=True, timeout=10)
-        files = [line[3:].strip() for line in dirty.stdout.splitlines()
-                 if len(line) > 3]
-        if not files:
-            return rev
-        if executable is None or not os.path.exists(executable):
-            return "%s (%d code files modified)" % (rev, len(files))
-        built = os.path.getmtime(executable)
-        before = [f for f in files
-                  if os.path.exists(os.path.join(REPO_ROOT, f)) and
-                  os.path.getmtime(os.path.join(REPO_ROOT, f)) <= built]
-        if not before:
-            return ("%s (%d code files modified after the executable was "
-                    "built, so not in it)" % (rev, len(files)))
-        return ("%s + uncommitted changes to %s (modified before the "
-                "executable was built, possibly in it)"
-                % (rev, ", ".join("`%s`" % f for f in before)))
-    except (OSError, subprocess.SubprocessError):
-        pass
-    return "unknown"
-
-
-def executable_info(executable):
-    """'path, built YYYY-MM-DD HH:MM:SS' (modification time, local time)."""
-    try:
-        t = os.path.getmtime(executable)
-    except OSError:
-        return rel(executable)
-    built = datetime.datetime.fromtimestamp(t)
-    return "`%s`, built %s" % (rel(executable),
-                               built.strftime("%Y-%m-%d %H:%M:%S"))
-
-
-def vefs_command(vefs, np, prm_file):
-    if np > 1:
-        return ["mpirun", "-np", str(np), "--oversubscribe", vefs, prm_file]
-    return [vefs, prm_file]
-
-
-def run_vefs(cmd, log_file, np):
-    env = dict(os.environ)
-    if np > 1:
-        env["OMPI_ALLOW_RUN_AS_ROOT"] = "1"
-        env["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] = "1"
-    with open(log_file, "w") as log:
-        start = time.perf_counter()
-        proc = subprocess.run(cmd, cwd=REPO_ROOT, env=env, stdout=log,
-                              stderr=subprocess.STDOUT)
-        wall = time.perf_counter() - start
-    return proc.returncode, wall
-
-
-def run_serial_scene(vefs, results, name, prm_text):
-    """Write <results>/<name>.prm, run vefs on it on one rank (log in
-    <name>.log) and record the wall time and the git revision of the
-    executable in <name>.json. Returns True if vefs succeeded."""
-    prm_file = os.path.join(results, name + ".prm")
-    with open(prm_file, "w") as f:
-        f.write(prm_text)
-    status, wall = run_vefs(vefs_command(vefs, 1, prm_file),
-                            os.path.join(results, name + ".log"), 1)
-    if status != 0:
-        print("%s failed (see %s.log)" % (name, name), file=sys.stderr)
-        return False
-    with open(os.path.join(results, name + ".json"), "w") as f:
-        json.dump({"wall_time": wall, "revision": git_revision(vefs)}, f)
-    print("%s: %.1f s" % (name, wall), flush=True)
-    return True
 
 
 def summarize(output_dir, args):
@@ -365,11 +150,7 @@ def main(argv=None):
               "e.g. scripts/setup.sh)" % vefs, file=sys.stderr)
         return 1
 
-    os.makedirs(results, exist_ok=True)
-    ignore = os.path.join(results, ".gitignore")
-    if not os.path.exists(ignore):
-        with open(ignore, "w") as f:
-            f.write("# generated by broken_dam_refinement.py\n*\n")
+    results_directory(results)
 
     this_command = " ".join(
         ["python3", rel(os.path.abspath(sys.argv[0]))] +
@@ -401,8 +182,8 @@ def main(argv=None):
             if os.path.isdir(out_dir):
                 shutil.rmtree(out_dir)
             print("running level %d: %s" % (level, cmd_text), flush=True)
-            code, wall = run_vefs(cmd, os.path.join(results, name + ".log"),
-                                  args.np)
+            run = run_vefs(cmd, os.path.join(results, name + ".log"))
+            code, wall = run.returncode, run.wall
             info.update(returncode=code, wall_time=wall, **provenance)
             with open(info_file, "w") as f:
                 json.dump(info, f, indent=1)

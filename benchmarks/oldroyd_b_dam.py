@@ -13,12 +13,10 @@ import math
 import os
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.join(HERE, "..")
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from broken_dam_refinement import run_serial_scene, set_entry  # noqa: E402
-from vefs_stats import read_statistics, interpolate  # noqa: E402
+from vefs_tools import REPO_ROOT as ROOT
+from vefs_tools.prm import set_entry
+from vefs_tools.run import run_serial_scene
+from vefs_tools.statistics import read_statistics, interpolate
 
 
 def main():

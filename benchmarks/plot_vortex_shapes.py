@@ -24,18 +24,18 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-REPO_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(REPO_ROOT, "scripts"))
-import render_shapes as rs  # noqa: E402
+from vefs_tools import REPO_ROOT  # noqa: E402
+from vefs_tools.vtu import (read_pvtu, read_series, cell_rows,  # noqa: E402
+                            plane_data)
 
 CENTER = (0.5, 0.75)
 RADIUS = 0.15
 
 
 def outline_grid(pvtu):
-    points, cells, types, values, _ = rs.read_pvtu(pvtu, ["level_set"])
-    return rs.plane_data(points, cells, types, values["level_set"], 2,
-                         None, None)
+    mesh = read_pvtu(pvtu, ["level_set"])
+    return plane_data(mesh.points, cell_rows(mesh), mesh.types,
+                      mesh.point_data["level_set"], 2, None, None)
 
 
 def main(argv=None):
@@ -47,12 +47,12 @@ def main(argv=None):
     args = parser.parse_args(argv)
 
     runs = [r.split("=", 1) for r in args.run]
-    times = [t for t, _ in rs.read_pvd(runs[0][1]) if t > 0]
+    times = [t for t, _ in read_series(runs[0][1]) if t > 0]
     fig, axes = plt.subplots(1, len(times), figsize=(5 * len(times), 5))
     axes = list(axes) if len(times) > 1 else [axes]
     for ax, time in zip(axes, times):
         for k, (label, directory) in enumerate(runs):
-            records = dict(rs.read_pvd(directory))
+            records = dict(read_series(directory))
             record = min(records, key=lambda t: abs(t - time))
             if abs(record - time) > 1e-9 * max(1, time):
                 sys.exit("%s has no output at t = %g" % (directory, time))

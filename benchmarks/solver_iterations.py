@@ -22,11 +22,10 @@ import json
 import os
 import sys
 
-REPO_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(REPO_ROOT, "scripts"))
-sys.path.insert(0, os.path.join(REPO_ROOT, "benchmarks"))
-import broken_dam_refinement as bdr  # noqa: E402
-from vefs_stats import read_statistics, column  # noqa: E402
+import broken_dam_refinement as bdr
+from vefs_tools.prm import set_entry
+from vefs_tools.run import resolve, run_serial_scene
+from vefs_tools.statistics import read_statistics, column
 
 DENSITY = 1000.0
 CAVITY_WIDTH = 0.28575
@@ -51,10 +50,10 @@ def main(argv=None):
     p.add_argument("--no-run", action="store_true")
     args = p.parse_args(argv)
 
-    vefs = bdr.resolve(args.vefs)
-    results = bdr.resolve(args.results_dir)
+    vefs = resolve(args.vefs)
+    results = resolve(args.results_dir)
     os.makedirs(results, exist_ok=True)
-    with open(bdr.resolve("prm/broken_dam_2d.prm")) as f:
+    with open(resolve("prm/broken_dam_2d.prm")) as f:
         base = f.read()
 
     tau = 0.001
@@ -68,13 +67,13 @@ def main(argv=None):
             info_file = os.path.join(results, name + ".json")
             if not args.no_run:
                 text = bdr.make_prm(base, level, out_dir)
-                text = bdr.set_entry(text, ["Material"], "Solvent viscosity",
+                text = set_entry(text, ["Material"], "Solvent viscosity",
                                      repr(mu))
-                text = bdr.set_entry(text, ["Time"], "End time",
+                text = set_entry(text, ["Time"], "End time",
                                      repr(args.end_time))
-                text = bdr.set_entry(text, ["Time"], "Time step", repr(tau))
-                text = bdr.set_entry(text, ["Output"], "Interval", "0")
-                if not bdr.run_serial_scene(vefs, results, name, text):
+                text = set_entry(text, ["Time"], "Time step", repr(tau))
+                text = set_entry(text, ["Output"], "Interval", "0")
+                if not run_serial_scene(vefs, results, name, text):
                     return 1
             with open(info_file) as f:
                 revision = revision or json.load(f)["revision"]
@@ -124,7 +123,7 @@ def main(argv=None):
         "level whose block exceeds that size." % COARSE_ROWS_2D,
     ]
     text = "\n".join(lines) + "\n"
-    with open(bdr.resolve(args.doc), "w") as f:
+    with open(resolve(args.doc), "w") as f:
         f.write(text)
     print(text)
     return 0

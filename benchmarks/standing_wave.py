@@ -22,13 +22,11 @@ import math
 import os
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-sys.path.insert(0, HERE)
-from broken_dam_refinement import set_entry, run_serial_scene  # noqa: E402
-from standing_wave import measure, exact_wave  # noqa: E402
-from vefs_stats import read_statistics  # noqa: E402
+from vefs_tools import REPO_ROOT as ROOT
+from vefs_tools.prm import set_entry
+from vefs_tools.run import run_serial_scene
+from vefs_tools.standing_wave import measure, exact_wave
+from vefs_tools.statistics import read_statistics
 
 # The scene's exact period (g = 9.81, L = 0.1, d = 0.05).
 K = math.pi / 0.1

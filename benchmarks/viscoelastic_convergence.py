@@ -25,7 +25,7 @@ to <results-dir>/<run>.prm, <run> = <scene>[_<tag>]_conv_L<L>_dt<tau>, with
   Output / Interval               = 0      (no visualization files)
   Output directory                = <results-dir>/<run>
 and run on one rank from the repository root by the helper of the other
-studies (benchmarks/broken_dam_refinement.py run_serial_scene: log in
+studies (scripts/vefs_tools/run.py run_serial_scene: log in
 <name>.log, wall time of the whole process and git revision of the
 executable in <name>.json, to which the study adds the CPU time of the
 process, the 1-minute load average before the run, the --set entries and
@@ -40,10 +40,10 @@ half and a quarter of it. --tag names a variant (e.g. one made with
 
 Measures (the analysis is that of the test checkers, imported from
 scripts/):
-  waters-king (scripts/waters_king.py compare_run): the largest
+  waters-king (scripts/vefs_tools/waters_king.py compare_run): the largest
       |U_sim - U_exact| / 1.5 of the probe (centreline) velocity over the
       statistics rows with 0 < T = t/lambda <= --t-max (default 10);
-  shear-wave (scripts/shear_wave.py analyse_run): |frequency error|
+  shear-wave (scripts/vefs_tools/shear_wave.py analyse_run): |frequency error|
       |w_sim - w| / w from the zero crossings, and the amplitude loss per
       period from the extrema of the full half periods.
 The table also gives the number of steps, the largest CFL number of the
@@ -78,15 +78,13 @@ import resource
 import shlex
 import sys
 
-REPO_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(REPO_ROOT, "scripts"))
-sys.path.insert(0, os.path.join(REPO_ROOT, "benchmarks"))
-import broken_dam_refinement as bdr  # noqa: E402
-import transport_benchmarks as tb  # noqa: E402
-import shear_wave  # noqa: E402
-import waters_king  # noqa: E402
-from vefs_stats import (read_statistics, read_parameters, parameter,  # noqa: E402
-                        parameter_float)
+from vefs_tools import shear_wave, waters_king
+from vefs_tools.prm import (read_parameters, parameter, parameter_float,
+                            set_entry, apply_settings)
+from vefs_tools.run import (results_directory, resolve, rel, nproc, cpu_model,
+                            git_revision, vefs_command, run_serial_scene,
+                            executable_id, snapshot_executable)
+from vefs_tools.statistics import read_statistics
 
 CASES = {
     "waters-king": {
@@ -106,34 +104,15 @@ def run_name(stem, level, tau):
     return "%s_conv_L%d_dt%g" % (stem, level, tau)
 
 
-def parse_set(item):
-    """'Section/Sub/Entry=value' -> (['Section', 'Sub'], 'Entry', 'value');
-    raises ValueError without '=' or entry name."""
-    if "=" not in item:
-        raise ValueError("--set %r: expected SECTION/ENTRY=VALUE" % item)
-    key, value = item.split("=", 1)
-    parts = [x.strip() for x in key.split("/")]
-    if not parts[-1] or any(not x for x in parts):
-        raise ValueError("--set %r: empty section or entry name" % item)
-    return parts[:-1], parts[-1], value.strip()
-
-
-def apply_sets(text, sets):
-    for item in sets or []:
-        path, name, value = parse_set(item)
-        text = bdr.set_entry(text, path, name, value)
-    return text
-
-
 def make_prm(text, level, tau, output_dir, end_time=None):
     for entry in ("Minimum level", "Bulk level", "Maximum level"):
-        text = bdr.set_entry(text, ["Mesh refinement"], entry, str(level))
-    text = bdr.set_entry(text, ["Time"], "Time step", repr(tau))
-    text = bdr.set_entry(text, ["Time"], "Target CFL", "0")  # fixed tau
+        text = set_entry(text, ["Mesh refinement"], entry, str(level))
+    text = set_entry(text, ["Time"], "Time step", repr(tau))
+    text = set_entry(text, ["Time"], "Target CFL", "0")  # fixed tau
     if end_time is not None:
-        text = bdr.set_entry(text, ["Time"], "End time", repr(end_time))
-    text = bdr.set_entry(text, ["Output"], "Interval", "0")
-    text = bdr.set_entry(text, [], "Output directory", output_dir)
+        text = set_entry(text, ["Time"], "End time", repr(end_time))
+    text = set_entry(text, ["Output"], "Interval", "0")
+    text = set_entry(text, [], "Output directory", output_dir)
     return text
 
 
@@ -214,7 +193,7 @@ def format_markdown(case, runs, levels, taus, info):
         (info["scene"], "" if info["end_time"] is None else
          ", end time %g s" % info["end_time"]),
         "- Machine: `nproc` = %s, %s; 1 rank per run." %
-        (bdr.nproc(), bdr.cpu_model()),
+        (nproc(), cpu_model()),
         "- Command: `%s`" % info["command"],
     ]
     if info.get("sets"):
@@ -336,7 +315,7 @@ def plot(case, runs, levels, taus, path, t_max):
                                        NullFormatter)
     except ImportError:
         print("viscoelastic_convergence: no matplotlib, %s not written (use "
-              "/usr/bin/python3 with python3-matplotlib)" % bdr.rel(path),
+              "/usr/bin/python3 with python3-matplotlib)" % rel(path),
               file=sys.stderr)
         return False
     measures = [(k, label % {"t_max": t_max})
@@ -448,7 +427,7 @@ def parse_args(argv=None):
 
 def main(argv=None):
     args = parse_args(argv)
-    scene = bdr.resolve(args.scene)
+    scene = resolve(args.scene)
     if not os.path.isfile(scene):
         print("viscoelastic_convergence: no scene %s" % args.scene,
               file=sys.stderr)
@@ -456,7 +435,7 @@ def main(argv=None):
     with open(scene) as f:
         base = f.read()
     try:
-        base = apply_sets(base, args.set)
+        base = apply_settings(base, args.set)
     except ValueError as e:
         print("viscoelastic_convergence: %s" % e, file=sys.stderr)
         return 1
@@ -484,12 +463,12 @@ def main(argv=None):
         print("viscoelastic_convergence: repeated level or time step",
               file=sys.stderr)
         return 1
-    output = bdr.resolve(args.output or os.path.join(
+    output = resolve(args.output or os.path.join(
         "doc", "%s_convergence.md" % stem))
-    plot_path = bdr.resolve(args.plot) if args.plot else \
+    plot_path = resolve(args.plot) if args.plot else \
         os.path.splitext(output)[0] + ".png"
-    vefs = bdr.resolve(args.vefs)
-    results = bdr.resolve(args.results_dir)
+    vefs = resolve(args.vefs)
+    results = resolve(args.results_dir)
     command = " ".join(["python3", "benchmarks/viscoelastic_convergence.py"]
                        + [shlex.quote(a) for a in (
                            argv if argv is not None else sys.argv[1:])])
@@ -501,7 +480,7 @@ def main(argv=None):
                 print("# ---- %s.prm ----" % name)
                 print(make_prm(base, level, tau, os.path.join(results, name),
                                args.end_time))
-                print("# command: %s" % " ".join(bdr.vefs_command(
+                print("# command: %s" % " ".join(vefs_command(
                     vefs, 1, os.path.join(results, name + ".prm"))))
         return 0
 
@@ -510,25 +489,21 @@ def main(argv=None):
             print("viscoelastic_convergence: %s is not an executable (build "
                   "first, e.g. scripts/setup.sh)" % vefs, file=sys.stderr)
             return 1
-        os.makedirs(results, exist_ok=True)
-        ignore = os.path.join(results, ".gitignore")
-        if not os.path.exists(ignore):
-            with open(ignore, "w") as f:
-                f.write("# generated by the benchmark scripts\n*\n")
+        results_directory(results)
         # git state judged once, against the build time of the original
         # (HEAD may move during the study; the copy does not change)
-        revision = bdr.git_revision(vefs)
+        revision = git_revision(vefs)
         if not args.no_snapshot:
             try:
-                copy, ident = tb.snapshot_executable(vefs, results)
+                copy, ident = snapshot_executable(vefs, results)
             except RuntimeError as e:
                 print("viscoelastic_convergence: %s" % e, file=sys.stderr)
                 return 1
             print("running a copy of %s (built %s, sha256 %s...): %s"
-                  % (bdr.rel(vefs), ident["built"], ident["sha256"][:12],
-                     bdr.rel(copy)), flush=True)
+                  % (rel(vefs), ident["built"], ident["sha256"][:12],
+                     rel(copy)), flush=True)
             vefs = copy
-        executable = tb.executable_id(vefs)
+        executable = executable_id(vefs)
 
     runs = {}
     revisions = []
@@ -545,7 +520,7 @@ def main(argv=None):
                 load = os.getloadavg()[0]
                 usage = resource.getrusage(resource.RUSAGE_CHILDREN)
                 cpu0 = usage.ru_utime + usage.ru_stime
-                if not bdr.run_serial_scene(
+                if not run_serial_scene(
                         vefs, results, name,
                         make_prm(base, level, tau, out_dir, args.end_time)):
                     runs[(level, tau)] = {"error": "vefs failed (see %s.log)"
@@ -587,7 +562,7 @@ def main(argv=None):
             runs[(level, tau)] = r
 
     info = {"date": datetime.date.today().isoformat(),
-            "scene": bdr.rel(scene), "end_time": args.end_time,
+            "scene": rel(scene), "end_time": args.end_time,
             "command": command, "revisions": revisions, "t_max": args.t_max,
             "plot": None, "sets": args.set, "executables": executables}
     os.makedirs(os.path.dirname(output), exist_ok=True)
@@ -598,8 +573,8 @@ def main(argv=None):
     with open(output, "w") as f:
         f.write(text)
     print(text, end="")
-    print("(written to %s%s)" % (bdr.rel(output), "" if not info["plot"]
-                                 else " and %s" % bdr.rel(plot_path)))
+    print("(written to %s%s)" % (rel(output), "" if not info["plot"]
+                                 else " and %s" % rel(plot_path)))
     return 1 if failed else 0
 
 

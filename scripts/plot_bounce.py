@@ -7,13 +7,12 @@ have those columns (a 3D run).
 
 Usage: /usr/bin/python3 scripts/plot_bounce.py OUTPUT_DIR PNG
 """
-import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vefs_stats import read_statistics  # noqa: E402
+import matplotlib
 
-import matplotlib  # noqa: E402
+from vefs_tools.statistics import read_statistics
+
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 

@@ -26,10 +26,10 @@ except ImportError as e:
              "python3-matplotlib "
              "python3-numpy (and run the script with /usr/bin/python3)" % e)
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import compare_martin_moyce as cmm  # noqa: E402
+from vefs_tools import REPO_ROOT  # noqa: E402
+from vefs_tools import martin_moyce as cmm  # noqa: E402
 
-DEFAULT_OUTPUT = os.path.join(cmm.REPO_ROOT, "doc", "broken_dam_front.png")
+DEFAULT_OUTPUT = os.path.join(REPO_ROOT, "doc", "broken_dam_front.png")
 
 
 def _e(x):

@@ -9,7 +9,7 @@ Reads OUTPUT_DIR/solution.pvd, the .pvtu records it lists and their .vtu
 pieces (every MPI rank writes one piece), as deal.II writes them: XML VTK
 unstructured grids whose DataArrays are "binary" (base64), zlib-compressed
 (compressor="vtkZLibDataCompressor") or not, or "ascii" (decoded by
-vtu_data.py).  Only the standard library and numpy/matplotlib are used.
+vefs_tools/vtu.py).  Only the standard library and numpy/matplotlib are used.
 
 Every panel shows, at one output time,
   * the cells counted as liquid (liquid_fraction >= 1/2, the cells of the
@@ -25,7 +25,6 @@ import argparse
 import math
 import os
 import sys
-import xml.etree.ElementTree as ET
 
 try:
     import numpy as np
@@ -34,93 +33,11 @@ try:
     import matplotlib.pyplot as plt  # noqa: E402
     from matplotlib.collections import PolyCollection  # noqa: E402
     from matplotlib.tri import Triangulation  # noqa: E402
-    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-    from vtu_data import VTK_TYPES, data_array  # noqa: E402
+    from vefs_tools.vtu import read_series, read_any, cell_list  # noqa: E402
 except ImportError as e:
     sys.exit("plot_free_surface.py: %s; on Debian: apt-get install "
              "python3-matplotlib "
              "python3-numpy (and run the script with /usr/bin/python3)" % e)
-
-# VTK cell types of quadrilaterals (linear and Lagrange) and triangles
-VTK_TRIANGLE, VTK_QUAD, VTK_LAGRANGE_QUADRILATERAL = 5, 9, 70
-
-
-# --------------------------------------------------------------------------
-# reading
-# --------------------------------------------------------------------------
-
-def _array(element, header_type, compressed):
-    """numpy array of one <DataArray>, shape (n, components)."""
-    values = data_array(element, compressed, VTK_TYPES[header_type])
-    return values.reshape(len(values), -1)
-
-
-def read_vtu(path):
-    """Points (n, 3), cells (list of vertex index arrays) and point data
-    {name: array (n, components)} of a .vtu file."""
-    root = ET.parse(path).getroot()
-    if root.get("byte_order", "LittleEndian") != "LittleEndian":
-        raise ValueError("%s: only little-endian files are supported" % path)
-    header_type = root.get("header_type", "UInt32")
-    compressed = root.get("compressor") is not None
-    if compressed and root.get("compressor") != "vtkZLibDataCompressor":
-        raise ValueError("%s: compressor %s not supported"
-                         % (path, root.get("compressor")))
-    points, cells, point_data = [], [], {}
-    offset = 0
-    for piece in root.iter("Piece"):
-        pts = _array(piece.find("Points/DataArray"), header_type, compressed)
-        cell_arrays = {e.get("Name"): e for e in piece.find("Cells")}
-        conn = _array(cell_arrays["connectivity"], header_type,
-                      compressed).ravel()
-        offs = _array(cell_arrays["offsets"], header_type, compressed).ravel()
-        start = 0
-        for end in offs:
-            cells.append(conn[start:end].astype(np.int64) + offset)
-            start = end
-        pd = piece.find("PointData")
-        if pd is not None:
-            for e in pd.findall("DataArray"):
-                point_data.setdefault(e.get("Name"), []).append(
-                    _array(e, header_type, compressed))
-        points.append(pts)
-        offset += len(pts)
-    return (np.vstack(points), cells,
-            {k: np.vstack(v) for k, v in point_data.items()})
-
-
-def read_pvtu(path):
-    """All pieces of a .pvtu record merged."""
-    root = ET.parse(path).getroot()
-    d = os.path.dirname(path)
-    points, cells, data = [], [], {}
-    offset = 0
-    for piece in root.iter("Piece"):
-        p, c, pd = read_vtu(os.path.join(d, piece.get("Source")))
-        points.append(p)
-        cells += [x + offset for x in c]
-        for k, v in pd.items():
-            data.setdefault(k, []).append(v)
-        offset += len(p)
-    return (np.vstack(points), cells,
-            {k: np.vstack(v) for k, v in data.items()})
-
-
-def read_series(output_dir):
-    """[(time, path of .pvtu or .vtu)] from solution.pvd (or the files)."""
-    pvd = os.path.join(output_dir, "solution.pvd")
-    if os.path.exists(pvd):
-        root = ET.parse(pvd).getroot()
-        return [(float(e.get("timestep")), os.path.join(output_dir,
-                                                        e.get("file")))
-                for e in root.iter("DataSet")]
-    files = sorted(f for f in os.listdir(output_dir) if f.endswith(".pvtu"))
-    return [(float(i), os.path.join(output_dir, f))
-            for i, f in enumerate(files)]
-
-
-def read_any(path):
-    return read_pvtu(path) if path.endswith(".pvtu") else read_vtu(path)
 
 
 # --------------------------------------------------------------------------
@@ -150,7 +67,7 @@ def triangles(cells):
 def draw(ax, points, cells, data, time, field, mesh, box):
     polys = [_corners(c, points) for c in cells]
     if "liquid_fraction" in data:
-        frac = data["liquid_fraction"][:, 0]
+        frac = data["liquid_fraction"]
         liquid = [p for p, c in zip(polys, cells)
                   if frac[c[0]] >= 0.5]
         ax.add_collection(PolyCollection(liquid, facecolors="#a6cee3",
@@ -160,7 +77,7 @@ def draw(ax, points, cells, data, time, field, mesh, box):
                                          edgecolors="0.75", linewidths=0.15,
                                          zorder=2))
     if field in data:
-        values = data[field][:, 0]
+        values = data[field]
         tri = Triangulation(points[:, 0], points[:, 1], triangles(cells))
         level = 0.0 if field == "level_set" else 0.5
         ax.tricontour(tri, values, levels=[level], colors="#08306b",
@@ -211,7 +128,7 @@ def main(argv=None):
         chosen = [series[i] for i in sorted(set(idx))]
 
     frames = [(t, read_any(path)) for t, path in chosen]
-    all_points = np.vstack([f[1][0] for f in frames])
+    all_points = np.vstack([f[1].points for f in frames])
     if np.ptp(all_points[:, 2]) > 0:
         print("plot_free_surface: the output is 3D; only 2D runs are drawn",
               file=sys.stderr)
@@ -226,8 +143,9 @@ def main(argv=None):
     fig, axes = plt.subplots(nrow, ncol, figsize=(width,
                                                   nrow * 3.6 * aspect + 1.0),
                              squeeze=False)
-    for ax, (t, (points, cells, data)) in zip(axes.ravel(), frames):
-        draw(ax, points, cells, data, t, args.field, not args.no_mesh, box)
+    for ax, (t, mesh) in zip(axes.ravel(), frames):
+        draw(ax, mesh.points, cell_list(mesh), mesh.point_data, t,
+             args.field, not args.no_mesh, box)
     for ax in axes.ravel()[len(frames):]:
         ax.axis("off")
     fig.suptitle(args.title or "%s: liquid cells (blue), free surface "

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Plot the probe (centreline) velocity of Waters & King runs against
 T = t / lambda, with the exact series of Waters & King (1970)
-(scripts/waters_king.py; ../shared/reference/waters_king_1970.md).
+(scripts/waters_king.py; data/waters_king_1970.md).
 
 Usage (needs matplotlib, i.e. Debian's /usr/bin/python3):
   /usr/bin/python3 scripts/plot_waters_king.py OUTPUT_DIR [OUTPUT_DIR ...]
@@ -21,8 +21,7 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import waters_king  # noqa: E402
+from vefs_tools import waters_king
 
 
 def main(argv=None):

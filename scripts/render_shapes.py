@@ -8,9 +8,10 @@ Usage:
 
 Reads OUTPUT_DIR/solution.pvd (the list of .pvtu records and their times),
 each .pvtu's .vtu pieces (one per MPI rank) and OUTPUT_DIR/statistics (step
-numbers and times), with numpy and matplotlib only: the reader (vtu_data.py) knows
-the files deal.II's DataOut writes (inline base64, zlib compressed or not,
-UInt32 or UInt64 headers, or ascii) so that no VTK installation is needed.
+numbers and times), with numpy and matplotlib only: the reader
+(vefs_tools/vtu.py) knows the files deal.II's DataOut writes (inline
+base64, zlib compressed or not, UInt32 or UInt64 headers, or ascii) so
+that no VTK installation is needed.
 
 The body is where the level set is negative; its outline is the 0 contour
 of ``level_set`` (the transported field, bilinear/trilinear per cell in the
@@ -43,80 +44,16 @@ substitute is printed.
 import argparse
 import math
 import os
-import sys
-import xml.etree.ElementTree as ET
 
+import matplotlib
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vefs_stats import read_statistics, read_parameters  # noqa: E402
-from vtu_data import VTK_TYPES, data_array  # noqa: E402
+from vefs_tools.statistics import read_statistics
+from vefs_tools.prm import read_parameters
+from vefs_tools.vtu import read_pvtu, read_series, cell_rows, plane_data
 
-import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-
-VTK_QUAD, VTK_HEXAHEDRON = 9, 12
-
-
-# ---------------------------------------------------------------- reading
-
-def read_vtu(path, fields):
-    """Points, cells (connectivity rows), cell types and the point fields
-    named in `fields` (those present) of one .vtu piece."""
-    root = ET.parse(path).getroot()
-    compressed = root.get("compressor") is not None
-    header = VTK_TYPES[root.get("header_type", "UInt32")]
-    piece = root.find("UnstructuredGrid/Piece")
-    points = data_array(piece.find("Points/DataArray"), compressed, header)
-    arrays = {a.get("Name"): a for a in piece.find("Cells")}
-    conn = data_array(arrays["connectivity"], compressed, header)
-    offsets = data_array(arrays["offsets"], compressed, header)
-    types = data_array(arrays["types"], compressed, header)
-    if len(types) and np.any(np.diff(np.concatenate([[0], offsets]))
-                             != offsets[0]):
-        raise ValueError("%s: cells of different sizes" % path)
-    cells = conn.reshape(len(types), -1)
-    values = {}
-    point_data = piece.find("PointData")
-    for a in (point_data if point_data is not None else []):
-        if a.get("Name") in fields:
-            values[a.get("Name")] = data_array(a, compressed, header)
-    return points, cells, types, values
-
-
-def read_pvtu(path, fields):
-    """All pieces of one .pvtu record, concatenated (indices shifted)."""
-    root = ET.parse(path).getroot()
-    pieces = [p.get("Source") for p in root.iter("Piece")]
-    base = os.path.dirname(path)
-    all_points, all_cells, all_types, all_values = [], [], [], {}
-    shift = 0
-    for source in pieces:
-        points, cells, types, values = read_vtu(os.path.join(base, source),
-                                                fields)
-        if not len(types):               # a rank without cells
-            continue
-        all_points.append(points)
-        all_cells.append(cells + shift)
-        all_types.append(types)
-        for name, v in values.items():
-            all_values.setdefault(name, []).append(v)
-        shift += len(points)
-    values = {k: np.concatenate(v) for k, v in all_values.items()
-              if len(v) == len(all_types)}
-    # float64: comparisons with a section's plane are then not rounded to
-    # float32
-    return (np.concatenate(all_points).astype(float),
-            np.concatenate(all_cells),
-            np.concatenate(all_types), values, len(pieces))
-
-
-def read_pvd(output_dir):
-    """[(time, path of .pvtu)] from OUTPUT_DIR/solution.pvd."""
-    root = ET.parse(os.path.join(output_dir, "solution.pvd")).getroot()
-    return [(float(d.get("timestep")), os.path.join(output_dir, d.get("file")))
-            for d in root.iter("DataSet")]
 
 
 # ------------------------------------------------------ steps and outputs
@@ -155,7 +92,7 @@ def select_outputs(output_dir, steps, every):
     --steps or --every: about 18 outputs (as many as the paper's figures)
     at multiples of the output interval.
     """
-    series = read_pvd(output_dir)
+    series = read_series(output_dir)
     out_times = np.array([t for t, _ in series])
     times = step_times(output_dir, out_times[-1])
     numbers = np.array(sorted(times))
@@ -189,106 +126,10 @@ def select_outputs(output_dir, steps, every):
 
 # ---------------------------------------------------------- geometry
 
-def tensor_order(points, corners, inplane):
-    """Sort 4 corner indices per row (n, 4) of axis-aligned rectangles into
-    tensor order (lower left, lower right, upper left, upper right)."""
-    p = points[corners][:, :, inplane]
-    k = np.lexsort((p[:, :, 0], p[:, :, 1]), axis=1)
-    return np.take_along_axis(corners, k, axis=1)
-
-
-def rectangles_2d(points, quads, values):
-    """(lower corners (n, 2), upper corners (n, 2), corner values (n, 4) in
-    tensor order) of the quadrilateral cells."""
-    corners = tensor_order(points, quads, [0, 1])
-    xy = points[corners][:, :, :2]
-    return xy[:, 0], xy[:, 3], values[corners]
-
-
-def section(points, hexes, values, axis, c):
-    """Section of axis-aligned hexahedra by the plane x[axis] = c, as
-    rectangles like rectangles_2d: the 4 edges of each cut box parallel to
-    `axis` are interpolated linearly at c, which is exact for the trilinear
-    Q1 output. Boxes with lo <= c < hi are cut (lo <= c <= hi on the top
-    face of the mesh): they tile the plane once, also where it is a face."""
-    inplane = [d for d in range(3) if d != axis]
-    x = points[hexes][:, :, axis]            # (n, 8)
-    lo, hi = x.min(1), x.max(1)
-    # a plane within rounding (float32 output) of the top face is on it
-    top = c >= points[:, axis].max() - 1e-6 * np.ptp(points[:, axis])
-    c = min(c, points[:, axis].max())
-    cut = (lo <= c) & ((c < hi) | (top & (c <= hi)))
-    hexes, x, lo, hi = hexes[cut], x[cut], lo[cut], hi[cut]
-    # per box the 4 vertices of the low face and of the high face along
-    # `axis`, each in tensor order, so that low[k] and high[k] share an edge
-    order = np.argsort(x, axis=1, kind="stable")
-    low = tensor_order(points, np.take_along_axis(hexes, order[:, :4], 1),
-                       inplane)
-    high = tensor_order(points, np.take_along_axis(hexes, order[:, 4:], 1),
-                        inplane)
-    if not (np.allclose(points[low][:, :, axis], lo[:, None])
-            and np.allclose(points[high][:, :, axis], hi[:, None])
-            and np.allclose(points[low][:, :, inplane],
-                            points[high][:, :, inplane])):
-        raise ValueError("section: the cells are not axis-aligned boxes")
-    w = ((c - lo) / np.where(hi > lo, hi - lo, 1))[:, None]
-    v = (1 - w) * values[low] + w * values[high]
-    xy = points[low][:, :, inplane]
-    return xy[:, 0], xy[:, 3], v
-
-
-def resample(lower, upper, corner_values):
-    """The cells' bilinear fields on the regular grid of the smallest cell
-    size: (x (nx,), y (ny,), values (ny, nx), masked where no cell is).
-
-    A conforming grid, so that contour/contourf are valid where the
-    adaptive mesh has hanging nodes (a matplotlib triangulation of the
-    cells would have T-junctions, which it does not support: its filled
-    contours came out up to 25 % too large); exact at the grid points
-    since the cells are refinements of one coarse grid and each cell's
-    field is bilinear. Values at points on cell boundaries are averaged
-    over the cells (they agree for the continuous level set; for
-    cell-constant fields this is the nodal average).
-    """
-    h = (upper - lower).min(0)
-    x0, x1 = lower.min(0), upper.max(0)
-    n = np.rint((x1 - x0) / h).astype(int) + 1
-    total = np.zeros((n[1], n[0]))
-    count = np.zeros((n[1], n[0]))
-    i0 = np.rint((lower - x0) / h).astype(int)
-    i1 = np.rint((upper - x0) / h).astype(int)
-    for a, b, v in zip(i0, i1, corner_values):
-        s = np.linspace(0, 1, b[0] - a[0] + 1)[None, :]
-        t = np.linspace(0, 1, b[1] - a[1] + 1)[:, None]
-        total[a[1]:b[1] + 1, a[0]:b[0] + 1] += (
-            (1 - t) * ((1 - s) * v[0] + s * v[1])
-            + t * ((1 - s) * v[2] + s * v[3]))
-        count[a[1]:b[1] + 1, a[0]:b[0] + 1] += 1
-    values = np.ma.masked_array(total / np.maximum(count, 1), count == 0)
-    return (x0[0] + h[0] * np.arange(n[0]), x0[1] + h[1] * np.arange(n[1]),
-            values)
-
-
 def body_function(values, field):
     """A function negative inside the body: the level set itself, or
     0.5 - fraction for the 0/1 fields (phi, liquid_fraction)."""
     return values if field == "level_set" else 0.5 - values
-
-
-def plane_data(points, cells, types, g, dim, axis, c):
-    """The body function on a regular grid of the 2D domain or of the
-    section plane (see resample), or None if the plane misses the mesh."""
-    if dim == 2:
-        if np.any(types != VTK_QUAD):
-            raise ValueError("2D output with cells other than quadrilaterals")
-        rects = rectangles_2d(points, cells, g)
-    else:
-        if np.any(types != VTK_HEXAHEDRON):
-            raise ValueError("3D output with cells other than hexahedra")
-        rects = section(points, cells, g, axis, c)
-    if not len(rects[0]):
-        return None
-    return resample(*rects)
 
 
 # ---------------------------------------------------------- drawing
@@ -347,7 +188,10 @@ def render(output_dir, frames, field, dim, sections, columns, overlay, png):
     planes = [(None, None)] if dim == 2 else sections
     data = []   # per frame: [(grid, box, dims) per plane]
     for n, m, t_out, path in frames:
-        points, cells, types, values, pieces = read_pvtu(path, [field])
+        mesh = read_pvtu(path, [field])
+        points, cells, types, values, pieces = (
+            mesh.points, cell_rows(mesh), mesh.types, mesh.point_data,
+            mesh.pieces)
         if field not in values:
             raise SystemExit("%s: no point field '%s'" % (path, field))
         g = body_function(values[field].astype(float), field)
@@ -465,7 +309,7 @@ def main(argv=None):
         raise SystemExit("no output selected")
     sections = [parse_section(s) for s in a.section or []]
     if dim == 3:
-        points = read_pvtu(frames[0][3], [])[0]
+        points = read_pvtu(frames[0][3], []).points
         low, high = points.min(0), points.max(0)
         sections = sections or [(1, 0.5 * (low[1] + high[1]))]
         for axis, c in sections:

@@ -6,7 +6,11 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 
-PACKAGES=(libdeal.ii-dev numdiff openmpi-bin cmake g++ make python3)
+# python3-numpy and python3-matplotlib: the plotting and rendering scripts
+# (scripts/plot_*.py, scripts/render_shapes.py, the benchmarks' plots), run
+# with /usr/bin/python3, the interpreter these packages install into.
+PACKAGES=(libdeal.ii-dev numdiff openmpi-bin cmake g++ make python3
+          python3-numpy python3-matplotlib)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

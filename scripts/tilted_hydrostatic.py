@@ -9,11 +9,10 @@ cutting the cells obliquely. The largest speed over the run must stay below
 0.1 m/s, after one step), the volume (exact: half the box, the plane runs
 through its centre) must not change by more than 1e-9 relative.
 The solver tolerance (1e-12) sets the speeds actually reached."""
-import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vefs_stats import read_statistics, read_parameters, parameter_floats  # noqa: E402
+from vefs_tools.statistics import read_statistics
+from vefs_tools.prm import read_parameters, parameter_floats
 
 s = read_statistics(sys.argv[1])
 prm = read_parameters(sys.argv[1])

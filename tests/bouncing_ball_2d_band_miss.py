@@ -4,12 +4,9 @@ Prints both runs' lowest centroid and largest contact force and whether
 they agree within 1 mm and 5 %, whether the tolerance run kept its volume
 within 1e-4 and all liquid above the floor, and whether it changed the mesh
 no more often."""
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "scripts"))
-from vefs_stats import read_statistics  # noqa: E402
+from vefs_tools.statistics import read_statistics
 
 tolerant, every = (read_statistics(d) for d in sys.argv[1:3])
 

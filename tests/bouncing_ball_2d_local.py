@@ -11,8 +11,7 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 runpy.run_path(os.path.join(here, "bouncing_ball_2d_soft.py"), run_name="__main__")
 
-sys.path.insert(0, os.path.join(here, "..", "scripts"))
-from vefs_stats import read_statistics  # noqa: E402
+from vefs_tools.statistics import read_statistics
 
 s = read_statistics(sys.argv[1])
 steps = s["tau"][1:]

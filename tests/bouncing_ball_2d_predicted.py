@@ -11,11 +11,9 @@ a few percent, bound 1.25. A prediction that puts the liquid's inside
 at the surface refines the whole liquid (1.56 on average when psi was
 lifted to 0 inside the liquid). Also printed: the volume change (bound
 1e-6)."""
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from vefs_stats import read_statistics  # noqa: E402
+from vefs_tools.statistics import read_statistics
 
 s = read_statistics(sys.argv[1])
 cells, advected = s["cells"], s["advected_cells"]

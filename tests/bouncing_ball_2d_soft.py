@@ -12,11 +12,9 @@ References, exact for the continuous problem:
    initial height.
 Printed with 2 significant digits: first contact time, lowest centroid
 height and its time, largest contact force until then, the energy lost."""
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from vefs_stats import read_statistics  # noqa: E402
+from vefs_tools.statistics import read_statistics
 
 s = read_statistics(sys.argv[1])
 t, y, F = s["time"], s["centroid_y"], s["contact_force"]

@@ -17,11 +17,9 @@ left after the bounce. The material has no dissipation: the exact energy
 scheme's. Bound: at least 0.8 of it left at lift-off, between the 0.91
 that the scene's scheme keeps on this mesh and the 0.72 of the seed's
 (Stress theta = 1, linear interpolation and stress update), which fails."""
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from bounce_events import bounce_events  # noqa: E402
+from vefs_tools.bounce import bounce_events
 
 e = bounce_events(sys.argv[1])
 print("first contact at t = %.3g s" % e["first_contact_time"])

@@ -3,11 +3,9 @@ must stay at round-off, and the liquid volume must not change.
 Tolerances: speed below 1e-8 m/s (the solver tolerance is 1e-13) (gravity 9.81 m/s^2 over 0.1 s would give
 ~1 m/s if the pressure did not balance it), relative volume change below
 1e-9; the exact initial volume is 0.2 * 0.0503 = 0.01006 m^2."""
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from vefs_stats import read_statistics  # noqa: E402
+from vefs_tools.statistics import read_statistics
 
 s = read_statistics(sys.argv[1])
 print("steps run: %d" % (len(s["step"]) - 1))

@@ -8,11 +8,9 @@ front to the Newtonian one (bound 1%), the volume change (bound 1e-6 with
 the volume correction), the elastic energy at 0.2 s and the smallest
 eigenvalue of the conformation tensor over the run (positive definite:
 yes/NO)."""
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from vefs_stats import read_statistics, interpolate  # noqa: E402
+from vefs_tools.statistics import read_statistics, interpolate
 
 oldroyd, newtonian, small_lambda = (read_statistics(d) for d in sys.argv[1:4])
 

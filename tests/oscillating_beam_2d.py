@@ -16,11 +16,10 @@ of the velocity gradient, the stress at the wall's top corner grew without
 bound and the total energy reached 2.2 times its initial value.)
 Printed with 2 significant digits: first contact time, lowest centroid
 height, largest kinetic energy."""
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from vefs_stats import read_statistics, read_parameters, parameter_float  # noqa: E402
+from vefs_tools.statistics import read_statistics
+from vefs_tools.prm import read_parameters
 
 s = read_statistics(sys.argv[1])
 t, F, kinetic = s["time"], s["contact_force"], s["kinetic_energy"]

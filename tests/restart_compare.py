@@ -8,19 +8,16 @@ import math
 import re
 import sys
 
+from vefs_tools import statistics
+
 TOLERANCE = 1e-6
 SKIPPED = {"wall_time", "linear_iterations"}
 
 
 def read_statistics(directory):
-    names, rows = None, []
-    with open(directory + "/statistics") as f:
-        for line in f:
-            if line.startswith("# step "):
-                names = line[1:].split()
-            elif not line.startswith("#") and line.strip():
-                rows.append([float(v) for v in line.split()])
-    return names, rows
+    """(column names, rows): the rows as the statistics file has them."""
+    table = statistics.read_statistics(directory)
+    return list(table), [list(row) for row in zip(*table.values())]
 
 
 def read_series(directory):

@@ -9,12 +9,9 @@ the linear interpolation, 3.5e-3 with the gradient-augmented level set,
 redistancing and the cubic values at refined cells; volume change -19 %,
 -1.2 %, -1.9 %, -0.67 %."""
 import math
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "scripts"))
-from vefs_stats import read_statistics  # noqa: E402
+from vefs_tools.statistics import read_statistics
 
 s = read_statistics(sys.argv[1])
 error = s["shape_error"][-1]

@@ -3,12 +3,9 @@ set interpolated every step) against CFL 1 with 'Remap distance' = 10.
 Prints the L1 area error int |phi - phi_exact| (reference: the initial
 disk, the exact final shape) and the raw volume change of both runs, two
 significant digits; ok if CFL 1 is no worse than CFL 5 in both."""
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "scripts"))
-from vefs_stats import read_statistics  # noqa: E402
+from vefs_tools.statistics import read_statistics
 
 results = {}
 for label, directory in (("CFL 5, every step", sys.argv[1]),

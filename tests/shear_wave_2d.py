@@ -31,11 +31,9 @@ for numdiff, without a verdict. The exit status is non-zero only if the
 output cannot be read; a failed check shows as NO, which makes numdiff
 fail.
 """
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from shear_wave import main  # noqa: E402
+from vefs_tools.shear_wave import main
 
 if __name__ == "__main__":
     sys.exit(main(sys.argv[1:], prog="shear_wave_2d.py"))

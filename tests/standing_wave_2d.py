@@ -6,11 +6,9 @@ and whether they are within the bounds of this coarse run (h = L/64,
 tau = T/40, 1.5 periods): |frequency error| below 1 % and amplitude loss
 below 5 % per period. The finer runs of benchmarks/standing_wave.py
 (doc/standing_wave.md) measure the accuracy."""
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from standing_wave import measure  # noqa: E402
+from vefs_tools.standing_wave import measure
 
 m = measure(sys.argv[1])
 print("exact period: %.4f s" % m["exact_period"])

@@ -5,12 +5,9 @@ shape error of both against the exact translated disk, whether the first
 is below 0.01 and at most 1.1 times the second, whether its final volume
 change is below 1e-9, and whether the surface stayed in the finest cells
 (then no mesh change after the advection was needed)."""
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "scripts"))
-from vefs_stats import read_statistics  # noqa: E402
+from vefs_tools.statistics import read_statistics
 
 one, two = (read_statistics(d) for d in sys.argv[1:3])
 v0 = one["volume"][0]

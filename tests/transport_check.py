@@ -4,11 +4,8 @@ liquid back). Prints the relative L1 shape error int |phi - phi_exact| / V0,
 the volume change, the interface thickness (in finest cells) and a verdict
 against the bounds given by the calling test."""
 import math
-import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from vefs_stats import read_statistics  # noqa: E402
+from vefs_tools.statistics import read_statistics
 
 
 def check(output_dir, max_relative_error, max_thickness):

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checker of the waters_king_2d test: start-up of planar Poiseuille flow
 of an Oldroyd-B fluid against the exact series of Waters & King (1970)
-(../shared/reference/waters_king_1970.md, scripts/waters_king.py).
+(data/waters_king_1970.md, scripts/waters_king.py).
 
 Usage: waters_king_2d.py OUTPUT_DIR [--bound 0.05]
 
@@ -25,11 +25,9 @@ benchmarks/viscoelastic_convergence.py. The exit status is non-zero only
 if the output cannot be read (missing file, column or parameter); a
 failed check shows as NO, which makes numdiff fail.
 """
-import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
-from waters_king import main  # noqa: E402
+from vefs_tools.waters_king import main
 
 if __name__ == "__main__":
     if len(sys.argv) < 2:

@@ -4,10 +4,8 @@ slot, 6 cells wide, has its corners rounded; 0.084 measured when the test was
 written with the linear interpolation at the feet, 0.045 with the
 gradient-augmented level set of issue 11, 0.0032 with its four-stage
 trace), interface thickness 2 finest cells (issue 3)."""
-import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from transport_check import check  # noqa: E402
+from transport_check import check
 
 check(sys.argv[1], 0.12, 2.0)

@@ -4,12 +4,10 @@ as in zalesak_disk.py (relative L1 error 0.12, interface thickness 2 finest
 cells). The band must have kept up with the surface: after every advection
 no cell the surface crosses may be coarser than the finest level (the
 statistics column coarse_surface_cells, exact: 0)."""
-import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from transport_check import check  # noqa: E402
-from vefs_stats import read_statistics  # noqa: E402
+from transport_check import check
+from vefs_tools.statistics import read_statistics
 
 check(sys.argv[1], 0.12, 2.0)
 coarse = read_statistics(sys.argv[1])["coarse_surface_cells"][1:]

@@ -5,11 +5,8 @@ contact against Newton's second law for the centroid, energy left.
 
 Used by tests/bouncing_ball_2d_stiff.py and benchmarks/bouncing_ball_study.py.
 """
-import os
-import sys
-
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vefs_stats import read_statistics, read_parameters, parameter_float  # noqa: E402
+from .statistics import read_statistics
+from .prm import read_parameters, parameter_float
 
 G = 9.81
 

@@ -1,5 +1,6 @@
-#!/usr/bin/env python3
-"""Helpers to read vefs output (standard library only).
+"""The ``statistics`` file of a vefs run, and the few operations on its
+columns that several analyses need (standard library only, so that the
+test checkers can use it).
 
 read_statistics(path_or_dir)
     Reads the ``statistics`` file a vefs run writes into its output
@@ -8,34 +9,28 @@ read_statistics(path_or_dir)
     column name -> list of floats (one entry per data row).
 
 read_csv_reference(path)
-    Reads a reference CSV file (comment lines start with '#', then a header
-    row, then comma separated numbers).  Returns a dict column -> floats.
+    Reads a reference CSV file (data/*.csv: comment lines start with '#',
+    then a header row, then comma separated numbers).  Returns a dict
+    column -> floats.
 
 interpolate(ts, ys, t)
     Piecewise linear interpolation of ys(ts) at t; None outside [ts[0], ts[-1]].
-
-read_parameters(path_or_dir)
-    Reads the ``parameters.prm`` a vefs run writes into its output directory
-    (deal.II ParameterHandler PRM format; any input prm file works too).
-    Returns a dict 'Subsection/Entry' -> value string ('Entry' at the top
-    level, 'A/B/Entry' for nested subsections).  parameter(), parameter_float()
-    and parameter_floats() get one entry with a readable error message.
 
 parabolic_vertex(p0, p1, p2)
     (t, y) of the vertex of the parabola through three samples (t, y).
 
 zero_crossings(ts, ys)
     Times where ys(ts) changes sign, by linear interpolation between rows.
+
+``python3 -m vefs_tools.statistics DIR...`` (from scripts/) lists the
+columns of runs.
 """
 
 import bisect
 import os
 
 __all__ = ["read_statistics", "read_csv_reference", "interpolate",
-           "column", "statistics_path", "parameters_path", "read_parameters",
-           "parameter", "parameter_float", "parameter_floats",
-           "prm_split_comment", "prm_logical_lines",
-           "parabolic_vertex", "zero_crossings"]
+           "column", "statistics_path", "parabolic_vertex", "zero_crossings"]
 
 
 def statistics_path(path_or_dir):
@@ -210,142 +205,6 @@ def zero_crossings(ts, ys):
             result.append((t, 1 if y > 0 else -1))
         last = i
     return result
-
-
-# --------------------------------------------------------------------------
-# parameters.prm
-# --------------------------------------------------------------------------
-
-def parameters_path(path_or_dir):
-    """Path of parameters.prm given the file itself or its directory."""
-    if os.path.isdir(path_or_dir):
-        return os.path.join(path_or_dir, "parameters.prm")
-    return path_or_dir
-
-
-def prm_split_comment(line):
-    """(code, comment) of a PRM line: the code before its '#' comment (a
-    backslash-escaped '\\#' is kept as written) and the comment."""
-    out = []
-    i = 0
-    while i < len(line):
-        c = line[i]
-        if c == "\\" and i + 1 < len(line) and line[i + 1] == "#":
-            out.append("\\#")
-            i += 2
-            continue
-        if c == "#":
-            return "".join(out), line[i:]
-        out.append(c)
-        i += 1
-    return "".join(out), ""
-
-
-def prm_logical_lines(lines):
-    """Group physical lines (without line ends) into logical lines joined by a
-    trailing backslash.  Yields (first index, last index, code, comment)."""
-    i = 0
-    n = len(lines)
-    while i < n:
-        first = i
-        code, comment = prm_split_comment(lines[i])
-        while code.rstrip().endswith("\\") and i + 1 < n:
-            i += 1
-            c2, comment2 = prm_split_comment(lines[i])
-            code = code.rstrip()[:-1] + " " + c2.strip()
-            comment = comment2 or comment
-        yield first, i, code, comment
-        i += 1
-
-
-def read_parameters(path_or_dir):
-    """Read a deal.II ParameterHandler file in PRM format into a dict
-    'Subsection/Entry' -> value (a string, surrounding blanks removed).
-
-    Understands what ParameterHandler::print_parameters(..., PRM) writes and
-    what it reads: '#' comments ('\\#' is a literal '#'), lines continued
-    by a trailing backslash, 'subsection NAME' ... 'end' (nested), and
-    'set NAME = VALUE' (split at the first '=').  Runs of blanks in
-    subsection and entry names are reduced to one; names are kept as
-    written otherwise (case-sensitive, like deal.II).  A later 'set' of the
-    same entry wins.  'include' lines are not followed.  Raises ValueError
-    with the line number on anything else (unbalanced 'end', a line that
-    is none of the above, an unclosed subsection)."""
-    path = parameters_path(path_or_dir)
-    with open(path) as f:
-        physical = f.read().splitlines()
-
-    result = {}
-    stack = []
-    for first, _, code, _ in prm_logical_lines(physical):
-        number = first + 1
-        line = code.replace("\\#", "#")
-        text = line.strip()
-        if not text:
-            continue
-        words = text.split(None, 1)
-        keyword = words[0].lower()
-        if keyword == "subsection":
-            if len(words) < 2:
-                raise ValueError("%s:%d: 'subsection' without a name"
-                                 % (path, number))
-            stack.append(" ".join(words[1].split()))
-        elif keyword == "end" and len(words) == 1:
-            if not stack:
-                raise ValueError("%s:%d: 'end' without a subsection"
-                                 % (path, number))
-            stack.pop()
-        elif keyword == "set":
-            rest = words[1] if len(words) > 1 else ""
-            if "=" not in rest:
-                raise ValueError("%s:%d: 'set' without '=': %s"
-                                 % (path, number, text))
-            name, value = rest.split("=", 1)
-            name = " ".join(name.split())
-            if not name:
-                raise ValueError("%s:%d: 'set' without a name"
-                                 % (path, number))
-            result["/".join(stack + [name])] = value.strip()
-        elif keyword == "include":
-            continue
-        else:
-            raise ValueError("%s:%d: not a PRM line: %s" % (path, number,
-                                                            text))
-    if stack:
-        raise ValueError("%s: subsection '%s' not closed by 'end'"
-                         % (path, "/".join(stack)))
-    return result
-
-
-def parameter(prm, key, source="parameters.prm"):
-    """prm[key] with a readable error message if the entry is missing."""
-    try:
-        return prm[key]
-    except KeyError:
-        raise KeyError("entry '%s' not found in %s" % (key, source))
-
-
-def parameter_float(prm, key, source="parameters.prm"):
-    """The entry key as a float (ValueError if it is not a number)."""
-    value = parameter(prm, key, source)
-    try:
-        return float(value)
-    except ValueError:
-        raise ValueError("entry '%s' in %s is not a number: '%s'"
-                         % (key, source, value))
-
-
-def parameter_floats(prm, key, source="parameters.prm"):
-    """The entry key as a list of floats: a comma separated list (as
-    Gravity, the cavity corners or the probe point), or [] if empty."""
-    value = parameter(prm, key, source)
-    if not value.strip():
-        return []
-    try:
-        return [float(x) for x in value.split(",")]
-    except ValueError:
-        raise ValueError("entry '%s' in %s is not a comma separated list of "
-                         "numbers: '%s'" % (key, source, value))
 
 
 if __name__ == "__main__":
