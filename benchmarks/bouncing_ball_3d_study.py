@@ -7,7 +7,7 @@ Usage (from anywhere):
   /usr/bin/python3 benchmarks/bouncing_ball_3d_study.py [--vefs build/vefs]
       [--levels 2 3 4] [--np 2] [--end-time 0.3]
       [--results-dir benchmarks/results/bouncing_ball_3d]
-      [--output doc/bouncing_ball_3d_study.md] [--no-run]
+      [--output benchmarks/results/bouncing_ball_3d_study.md] [--no-run]
       [--set 'Solver/Stress theta=0.5' ...]
 
 Each run is the scene with Maximum level = L (finest cells 0.1 m / 2^L at
@@ -66,7 +66,7 @@ def main():
     parser.add_argument("--results-dir", default=os.path.join(
         ROOT, "benchmarks", "results", "bouncing_ball_3d"))
     parser.add_argument("--output", default=os.path.join(
-        ROOT, "doc", "bouncing_ball_3d_study.md"))
+        ROOT, "benchmarks", "results", "bouncing_ball_3d_study.md"))
     parser.add_argument("--no-run", action="store_true")
     parser.add_argument("--set", action="append", default=[],
                         metavar="SECTION/ENTRY=VALUE",

@@ -7,7 +7,7 @@ Usage (from anywhere):
   /usr/bin/python3 benchmarks/bouncing_ball_study.py [--vefs build/vefs]
       [--levels 4 5 6] [--time-steps 0.002 0.001] [--end-time 0.45]
       [--results-dir benchmarks/results/bouncing_ball_2d_stiff]
-      [--output doc/bouncing_ball_study.md] [--no-run]
+      [--output benchmarks/results/bouncing_ball_study.md] [--no-run]
       [--set 'Solver/Stress update=exponential' ...]
 
 Each run is the scene with Maximum level = L (finest cells 0.1 m / 2^L at
@@ -57,7 +57,7 @@ def main():
     parser.add_argument("--results-dir", default=os.path.join(
         ROOT, "benchmarks", "results", "bouncing_ball_2d_stiff"))
     parser.add_argument("--output", default=os.path.join(
-        ROOT, "doc", "bouncing_ball_study.md"))
+        ROOT, "benchmarks", "results", "bouncing_ball_study.md"))
     parser.add_argument("--no-run", action="store_true")
     parser.add_argument("--set", action="append", default=[],
                         metavar="SECTION/ENTRY=VALUE",

@@ -5,7 +5,7 @@ Usage:
   benchmarks/broken_dam_convergence.py [--vefs build/vefs]
       [--levels 5 6 7 8] [--time-steps 0.004 0.002 0.001 0.0005]
       [--prm prm/broken_dam_2d.prm] [--results-dir benchmarks/results]
-      [--doc doc/broken_dam_convergence.md] [--no-run]
+      [--doc benchmarks/results/broken_dam_convergence.md] [--no-run]
 
 Runs vefs for every (maximum level L, time step) pair, with the levels of
 benchmarks/broken_dam_refinement.py (bulk L-2, minimum max(L-4, 0)), and
@@ -67,7 +67,7 @@ def main(argv=None):
                    default=[0.004, 0.002, 0.001, 0.0005])
     p.add_argument("--prm", default="prm/broken_dam_2d.prm")
     p.add_argument("--results-dir", default="benchmarks/results")
-    p.add_argument("--doc", default="doc/broken_dam_convergence.md")
+    p.add_argument("--doc", default="benchmarks/results/broken_dam_convergence.md")
     p.add_argument("--no-run", action="store_true")
     args = p.parse_args(argv)
 

@@ -4,7 +4,7 @@
 Usage:
   benchmarks/broken_dam_refinement.py [--vefs build/vefs] [--np 1]
       [--levels 4 5 6] [--prm prm/broken_dam_2d.prm]
-      [--results-dir benchmarks/results] [--doc doc/broken_dam_refinement.md]
+      [--results-dir benchmarks/results] [--doc benchmarks/results/broken_dam_refinement.md]
       [--dry-run] [--no-run] [--a 0.05715] [--g 9.81] [--reference-dir DIR]
       [--max-shift 0.3] [--revision TEXT]
 
@@ -106,7 +106,7 @@ def parse_args(argv=None):
     p.add_argument("--results-dir", default="benchmarks/results",
                    help="where the prm copies, logs and outputs go "
                    "(default %(default)s)")
-    p.add_argument("--doc", default="doc/broken_dam_refinement.md",
+    p.add_argument("--doc", default="benchmarks/results/broken_dam_refinement.md",
                    help="Markdown file to write (default %(default)s)")
     p.add_argument("--dry-run", action="store_true",
                    help="only print the generated prm files")

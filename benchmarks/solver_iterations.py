@@ -5,7 +5,7 @@ mass-dominated to the viscous regime.
 Usage:
   benchmarks/solver_iterations.py [--vefs build/vefs] [--levels 5 6 7 8 9]
       [--viscosities 0.001 0.1 1 10] [--end-time 0.05]
-      [--results-dir benchmarks/results] [--doc doc/solver_iterations.md]
+      [--results-dir benchmarks/results] [--doc benchmarks/results/solver_iterations.md]
       [--no-run]
 
 The first --end-time seconds of the 2D broken dam (prm/broken_dam_2d.prm,
@@ -30,7 +30,7 @@ from vefs_tools.statistics import read_statistics, column
 DENSITY = 1000.0
 CAVITY_WIDTH = 0.28575
 COARSE_CELLS = 2
-# ML's 'coarse: max size' of the velocity block in 2D (source/stokes_step.cc).
+# ML's 'coarse: max size' of the velocity block in 2D (source/flow/stokes_step.cc).
 COARSE_ROWS_2D = 2000
 
 
@@ -46,7 +46,7 @@ def main(argv=None):
                    default=[0.001, 0.1, 1, 10])
     p.add_argument("--end-time", type=float, default=0.05)
     p.add_argument("--results-dir", default="benchmarks/results")
-    p.add_argument("--doc", default="doc/solver_iterations.md")
+    p.add_argument("--doc", default="benchmarks/results/solver_iterations.md")
     p.add_argument("--no-run", action="store_true")
     args = p.parse_args(argv)
 

@@ -9,7 +9,7 @@ matplotlib):
   /usr/bin/python3 benchmarks/standing_wave.py [--vefs build/vefs]
       [--levels 5 6 7] [--steps-per-period 20 40] [--periods 3]
       [--results-dir benchmarks/results/standing_wave]
-      [--output doc/standing_wave.md] [--plot doc/standing_wave.png]
+      [--output benchmarks/results/standing_wave.md] [--plot doc/standing_wave.png]
       [--no-run]
 
 Each run is the scene with Maximum level = L (Bulk level = L - 2), the time
@@ -58,7 +58,7 @@ def main():
     parser.add_argument("--results-dir", default=os.path.join(
         ROOT, "benchmarks", "results", "standing_wave"))
     parser.add_argument("--output", default=os.path.join(
-        ROOT, "doc", "standing_wave.md"))
+        ROOT, "benchmarks", "results", "standing_wave.md"))
     parser.add_argument("--plot", default=os.path.join(
         ROOT, "doc", "standing_wave.png"))
     parser.add_argument("--no-run", action="store_true")
@@ -110,7 +110,7 @@ def main():
                  "running beside. A largest CFL number far above that of "
                  "the physical wave (below 1) marks an unstable run: the "
                  "explicit surface limits tau to about 2 (h / (pi g))^(1/2) "
-                 "(doc/sharp_free_surface.md).")
+                 "(doc/standing_wave.md).")
     lines.append("")
     with open(args.output, "w") as f:
         f.write("\n".join(lines))

@@ -6,7 +6,7 @@ Usage (from anywhere; the plots need matplotlib, i.e. Debian's python3):
   /usr/bin/python3 benchmarks/transport_benchmarks.py
       [--cases zalesak vortex deformation] [--vefs build/vefs]
       [--nocorr-cfls 1 5 10] [--skip REGEX] [--set SECTION/ENTRY=VALUE]
-      [--results-dir benchmarks/results] [--doc doc/transport.md]
+      [--results-dir benchmarks/results] [--doc benchmarks/results/transport.md]
       [--reuse] [--no-run] [--dry-run] [--timeout 1800]
       [--l7-limit 60] [--l7-budget 600] [--no-snapshot] [--revision TEXT]
 
@@ -375,7 +375,7 @@ def parse_args(argv=None):
                    "refinement/Level set interpolation=linear' (repeatable)")
     p.add_argument("--vefs", default="build/vefs")
     p.add_argument("--results-dir", default="benchmarks/results")
-    p.add_argument("--doc", default="doc/transport.md")
+    p.add_argument("--doc", default="benchmarks/results/transport.md")
     p.add_argument("--reuse", action="store_true",
                    help="keep successful runs with the same prm and "
                    "executable")

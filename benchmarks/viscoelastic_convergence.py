@@ -8,7 +8,7 @@ Usage (from anywhere; the plot needs matplotlib, i.e. Debian's python3):
       [--scene prm/waters_king.prm] [--case auto|waters-king|shear-wave]
       [--vefs build/vefs] [--levels L ...] [--time-steps TAU ...]
       [--end-time T] [--set SECTION/ENTRY=VALUE ...] [--tag TAG]
-      [--output doc/<scene>_convergence.md] [--plot PNG]
+      [--output benchmarks/results/<scene>_convergence.md] [--plot PNG]
       [--results-dir benchmarks/results] [--t-max 10] [--no-snapshot]
       [--no-run] [--dry-run]
 
@@ -61,7 +61,7 @@ log2 of the error ratio for a halving; the finest level is the estimate
 (at coarser levels the spatial error limits the ratios).
 
 Writes the Markdown report to --output (default
-doc/<scene>_convergence.md) and prints it; the plot (default: --output
+benchmarks/results/<scene>_convergence.md) and prints it; the plot (default: --output
 with .png) shows each error against the wall time (one line per level)
 and against tau (one line per level, with a slope-1 guide).
 --no-run tabulates existing results; --dry-run prints the prm files and
@@ -405,11 +405,11 @@ def parse_args(argv=None):
                    "0.01*sin(2*pi*y); 0\"")
     p.add_argument("--tag",
                    help="variant name: runs <scene>_<tag>_conv_..., report "
-                   "doc/<scene>_<tag>_convergence.md")
+                   "benchmarks/results/<scene>_<tag>_convergence.md")
     p.add_argument("--no-snapshot", action="store_true",
                    help="run --vefs itself, not a copy taken at the start")
     p.add_argument("--output",
-                   help="Markdown report (default doc/<scene>[_<tag>]"
+                   help="Markdown report (default benchmarks/results/<scene>[_<tag>]"
                    "_convergence.md)")
     p.add_argument("--plot",
                    help="PNG plot (default: --output with .png)")
@@ -464,7 +464,7 @@ def main(argv=None):
               file=sys.stderr)
         return 1
     output = resolve(args.output or os.path.join(
-        "doc", "%s_convergence.md" % stem))
+        "benchmarks", "results", "%s_convergence.md" % stem))
     plot_path = resolve(args.plot) if args.plot else \
         os.path.splitext(output)[0] + ".png"
     vefs = resolve(args.vefs)

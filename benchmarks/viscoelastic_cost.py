@@ -6,7 +6,7 @@ total viscosity, compared section by section of the vefs timer.
 Usage (from anywhere; standard library only):
   python3 benchmarks/viscoelastic_cost.py [--vefs build/vefs]
       [--cases waters-king shear-wave] [--repeat 1]
-      [--results-dir benchmarks/results] [--output doc/viscoelastic_cost.md]
+      [--results-dir benchmarks/results] [--output benchmarks/results/viscoelastic_cost.md]
       [--no-snapshot] [--no-run]
 
 Cases (every run: one rank, Output/Verbose = true, Output/Interval = 0,
@@ -205,7 +205,7 @@ def parse_args(argv=None):
     p.add_argument("--repeat", type=int, default=1,
                    help="runs per variant (alternating; medians reported)")
     p.add_argument("--results-dir", default="benchmarks/results")
-    p.add_argument("--output", default="doc/viscoelastic_cost.md")
+    p.add_argument("--output", default="benchmarks/results/viscoelastic_cost.md")
     p.add_argument("--no-snapshot", action="store_true",
                    help="run --vefs itself, not a copy taken at the start")
     p.add_argument("--no-run", action="store_true",
