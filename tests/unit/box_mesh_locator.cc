@@ -10,6 +10,8 @@
 // And fold_into_cavity() wraps a periodic direction and moves points back
 // onto the other walls, a hair (1e-10 of the side) inside.
 
+#include "unit_test.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/fe/mapping_q1.h>
@@ -17,8 +19,6 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <vefs/box_mesh_locator.h>
-
-#include "unit_test.h"
 
 #include <iostream>
 
@@ -30,12 +30,12 @@ namespace
   void
   check(std::ostream &out)
   {
-    const MPI_Comm comm = MPI_COMM_WORLD;
+    const MPI_Comm     comm = MPI_COMM_WORLD;
     const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
     // [0, 3] x [-1, 1] (x [0.5, 2]) in 3 x 2 (x 2) coarse cells.
     const std::vector<unsigned int> subdivisions =
-      dim == 2 ? std::vector<unsigned int>{3, 2} :
-                 std::vector<unsigned int>{3, 2, 2};
+      dim == 2 ? std::vector<unsigned int>{3, 2}
+               : std::vector<unsigned int>{3, 2, 2};
     Point<dim> lower, upper;
     lower[0] = 0;
     upper[0] = 3;
@@ -47,8 +47,11 @@ namespace
         upper[dim - 1] = 2;
       }
     parallel::distributed::Triangulation<dim> triangulation(comm);
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation, subdivisions, lower, upper, true);
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              subdivisions,
+                                              lower,
+                                              upper,
+                                              true);
     triangulation.refine_global(1);
     // Refine around a point, three times: levels 1 to 4.
     Point<dim> focus;
@@ -73,10 +76,10 @@ namespace
                                             cavity,
                                             subdivisions,
                                             walls);
-    const MappingQ1<dim> mapping;
+    const MappingQ1<dim>            mapping;
 
     // Steps that are no multiple of any cell size.
-    const unsigned int n = dim == 2 ? 41 : 13;
+    const unsigned int n        = dim == 2 ? 41 : 13;
     unsigned int       n_points = 0, n_owned = 0, n_compared = 0;
     unsigned int       wrong_cell = 0, wrong_owner = 0;
     double             unit_point_error = 0;
@@ -107,19 +110,19 @@ namespace
         else
           unit_point_error =
             std::max(unit_point_error,
-                     xi.distance(vefs::BoxMeshLocator<dim>::unit_point(located,
-                                                                       p)));
+                     xi.distance(
+                       vefs::BoxMeshLocator<dim>::unit_point(located, p)));
       }
 
     const std::string name = std::to_string(dim) + "D, ";
     out << name << "mesh levels: " << triangulation.n_global_levels()
-        << ", points: " << n_points
-        << ", in owned cells on all ranks: "
+        << ", points: " << n_points << ", in owned cells on all ranks: "
         << Utilities::MPI::sum(n_owned, comm) << '\n';
     out << name << "cells different from GridTools: "
         << Utilities::MPI::sum(wrong_cell, comm) << '\n';
-    out << name << "wrong owner ranks: "
-        << Utilities::MPI::sum(wrong_owner, comm) << '\n';
+    out << name
+        << "wrong owner ranks: " << Utilities::MPI::sum(wrong_owner, comm)
+        << '\n';
     unit_test::check_below(out,
                            name + "unit point - deal.II's",
                            Utilities::MPI::max(unit_point_error, comm),

@@ -16,6 +16,8 @@
 // Only nodes and points whose path stays inside the cavity (|x - c| <
 // 0.8) are checked: outside, feet are moved back onto the walls.
 
+#include "unit_test.h"
+
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
@@ -25,8 +27,6 @@
 #include <vefs/characteristics.h>
 #include <vefs/nodal_gradients.h>
 #include <vefs/tensor_exponential.h>
-
-#include "unit_test.h"
 
 #include <iostream>
 
@@ -100,8 +100,8 @@ namespace
     else
       {
         Tensor<1, dim> n;
-        n[0] = 1;
-        n[1] = -2;
+        n[0]       = 1;
+        n[1]       = -2;
         n[dim - 1] = 2;
         n *= omega / n.norm();
         A[0][1] = -n[2];
@@ -113,9 +113,12 @@ namespace
       }
 
     parallel::distributed::Triangulation<dim> triangulation(comm);
-    const std::vector<unsigned int> subdivisions(dim, 2);
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation, subdivisions, filled<dim>(-1), filled<dim>(1), true);
+    const std::vector<unsigned int>           subdivisions(dim, 2);
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              subdivisions,
+                                              filled<dim>(-1),
+                                              filled<dim>(1),
+                                              true);
     triangulation.refine_global(dim == 2 ? 3 : 2);
     // A finer patch, so that paths cross hanging nodes.
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -141,7 +144,8 @@ namespace
     // Two stages: the foot's coordinate d as the predicted level set x_d.
     {
       const Tensor<2, dim> M = taylor(A, tau, 2);
-      const Tensor<2, dim> R = vefs::tensor_exponential(Tensor<2, dim>(-tau * A));
+      const Tensor<2, dim> R =
+        vefs::tensor_exponential(Tensor<2, dim>(-tau * A));
       std::vector<Point<dim>> feet(fields.nodes().size());
       for (unsigned int d = 0; d < dim; ++d)
         {
@@ -162,15 +166,15 @@ namespace
           if (r.norm() > radius)
             continue;
           ++n_checked;
-          discrete_error = std::max(
-            discrete_error, feet[i].distance(center + M * r));
+          discrete_error =
+            std::max(discrete_error, feet[i].distance(center + M * r));
           const double from_axis = (A * r).norm() / omega;
           if (from_axis > 0.1)
-            ratio_error = std::max(
-              ratio_error,
-              std::abs(feet[i].distance(center + R * r) /
-                         (std::pow(theta, 3) / 6 * from_axis) -
-                       1));
+            ratio_error =
+              std::max(ratio_error,
+                       std::abs(feet[i].distance(center + R * r) /
+                                  (std::pow(theta, 3) / 6 * from_axis) -
+                                1));
         }
       unit_test::check_below(out,
                              name + "two-stage feet - discrete exact",
@@ -189,15 +193,15 @@ namespace
     {
       fields.interpolate(Functions::ZeroFunction<dim>(), velocity);
       const auto velocity_gradient = vefs::recover_nodal_gradients(fields, dim);
-      const Tensor<2, dim>        M = taylor(A, tau, 4);
-      const Tensor<2, dim>        R =
+      const Tensor<2, dim> M       = taylor(A, tau, 4);
+      const Tensor<2, dim> R =
         vefs::tensor_exponential(Tensor<2, dim>(-tau * A));
-      std::vector<Point<dim>>     starts;
+      std::vector<Point<dim>> starts;
       // A lattice of points, the same on every rank; each rank traces its
       // own share.
-      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
       const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-      unsigned int       k = 0;
+      unsigned int       k       = 0;
       for (double x = -0.77; x < 0.8; x += 0.11)
         for (double y = -0.73; y < 0.8; y += 0.13)
           for (double z = dim == 3 ? -0.71 : 0; z < (dim == 3 ? 0.8 : 0.1);
@@ -216,12 +220,12 @@ namespace
                                             unit_symmetric_tensor<dim>());
       std::vector<double>         beyond_contact(starts.size());
       vefs::trace_back<dim>(fields,
-                       velocity_gradient,
-                       tau,
-                       locator,
-                       feet,
-                       &jacobians,
-                       beyond_contact);
+                            velocity_gradient,
+                            tau,
+                            locator,
+                            feet,
+                            &jacobians,
+                            beyond_contact);
       double foot_error = 0, jacobian_error = 0, rotation_ratio = 0;
       for (unsigned int i = 0; i < starts.size(); ++i)
         {
@@ -230,10 +234,9 @@ namespace
           jacobian_error = std::max(jacobian_error, (jacobians[i] - M).norm());
           const double from_axis = (A * r).norm() / omega;
           if (from_axis > 0.1)
-            rotation_ratio =
-              std::max(rotation_ratio,
-                       feet[i].distance(center + R * r) /
-                         (std::pow(theta, 5) / 120 * from_axis));
+            rotation_ratio = std::max(rotation_ratio,
+                                      feet[i].distance(center + R * r) /
+                                        (std::pow(theta, 5) / 120 * from_axis));
         }
       unit_test::check_below(out,
                              name + "four-stage feet - discrete exact",

@@ -7,14 +7,14 @@
 // damaged file is refused with a CheckpointError on all ranks. 2D and 3D,
 // 1 and 2 ranks (read on as many ranks as written).
 
+#include "unit_test.h"
+
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/grid/grid_generator.h>
 
 #include <vefs/checkpoint.h>
-
-#include "unit_test.h"
 
 #include <cstring>
 #include <filesystem>
@@ -62,8 +62,11 @@ namespace
     Point<dim> lower, upper;
     for (unsigned int d = 0; d < dim; ++d)
       upper[d] = 1 + 0.5 * d;
-    GridGenerator::subdivided_hyper_rectangle(
-      *triangulation, std::vector<unsigned int>(dim, 2), lower, upper, true);
+    GridGenerator::subdivided_hyper_rectangle(*triangulation,
+                                              std::vector<unsigned int>(dim, 2),
+                                              lower,
+                                              upper,
+                                              true);
     return triangulation;
   }
 
@@ -139,20 +142,24 @@ namespace
     state.initial_volume                   = 1. / 9;
     state.expected_volume                  = 1. / 11;
     state.last_output_step                 = 15;
-    state.visualization_series = {{0., "solution-00000.pvtu"},
-                                  {0.1 / 3, "solution-00015.pvtu"}};
+    state.visualization_series             = {{0., "solution-00000.pvtu"},
+                                              {0.1 / 3, "solution-00015.pvtu"}};
 
-    const std::string problem = vefs::write_checkpoint(
-      directory, "set Dimension = 2\n", fields, history, state);
-    out << name << "write_checkpoint: "
-        << (problem.empty() ? "no problem" : problem) << '\n';
+    const std::string problem = vefs::write_checkpoint(directory,
+                                                       "set Dimension = 2\n",
+                                                       fields,
+                                                       history,
+                                                       state);
+    out << name
+        << "write_checkpoint: " << (problem.empty() ? "no problem" : problem)
+        << '\n';
     const std::string found = vefs::find_checkpoint(directory);
     out << name << "found: " << found << '\n';
 
-    auto                       fresh_mesh = make_coarse_mesh<dim>();
+    auto                         fresh_mesh = make_coarse_mesh<dim>();
     vefs::TransportedFields<dim> fresh(*fresh_mesh, true, {});
-    vefs::LevelSetHistory<dim> fresh_history(1.5);
-    const vefs::RunState<dim>  read =
+    vefs::LevelSetHistory<dim>   fresh_history(1.5);
+    const vefs::RunState<dim>    read =
       vefs::read_checkpoint(found, *fresh_mesh, fresh, fresh_history);
 
     out << name << "active cells: " << triangulation->n_global_active_cells()
@@ -168,15 +175,14 @@ namespace
 
     const auto sum_differences = [&](const VectorType &a, const VectorType &b) {
       const int n = n_different(a, b);
-      return Utilities::MPI::min(n, comm) < 0 ?
-               std::string("layouts differ") :
-               std::to_string(Utilities::MPI::sum(n, comm));
+      return Utilities::MPI::min(n, comm) < 0
+               ? std::string("layouts differ")
+               : std::to_string(Utilities::MPI::sum(n, comm));
     };
     out << name << "entries different, fields: "
         << sum_differences(fields.fields, fresh.fields)
         << ", level set gradient: "
-        << sum_differences(fields.level_set_gradient,
-                           fresh.level_set_gradient)
+        << sum_differences(fields.level_set_gradient, fresh.level_set_gradient)
         << '\n';
     const auto kept = history.vectors(), restored = fresh_history.vectors();
     out << name << "history vectors: " << kept.size() << " written, "
@@ -184,16 +190,17 @@ namespace
     std::string history_differences;
     for (unsigned int i = 0; i < std::min(kept.size(), restored.size()); ++i)
       history_differences += " " + sum_differences(*kept[i], *restored[i]);
-    out << name << "entries different per history vector:"
-        << history_differences << '\n';
-    const auto scalars = history.scalars(), fresh_scalars =
-                                              fresh_history.scalars();
+    out << name
+        << "entries different per history vector:" << history_differences
+        << '\n';
+    const auto scalars       = history.scalars(),
+               fresh_scalars = fresh_history.scalars();
     out << name << "history scalars equal: "
         << (scalars.has_base == fresh_scalars.has_base &&
                 scalars.moved == fresh_scalars.moved &&
-                scalars.taus == fresh_scalars.taus ?
-              "yes" :
-              "no")
+                scalars.taus == fresh_scalars.taus
+              ? "yes"
+              : "no")
         << '\n';
 
     const auto &s = state.statistics, &r = read.statistics;
@@ -207,8 +214,7 @@ namespace
       state.expected_volume == read.expected_volume &&
       state.last_output_step == read.last_output_step &&
       state.visualization_series == read.visualization_series;
-    out << name << "run state equal: " << (state_equal ? "yes" : "no")
-        << '\n';
+    out << name << "run state equal: " << (state_equal ? "yes" : "no") << '\n';
 
     // One byte more in a file the state lists: refused before p4est reads.
     MPI_Barrier(comm);
@@ -228,8 +234,7 @@ namespace
         refused = true;
       }
     out << name << "damaged checkpoint refused on all ranks: "
-        << (!Utilities::MPI::logical_or(!refused, comm) ? "yes" : "no")
-        << '\n';
+        << (!Utilities::MPI::logical_or(!refused, comm) ? "yes" : "no") << '\n';
   }
 } // namespace
 

@@ -10,6 +10,8 @@
 // instead of falling back to deal.II's, and only then does the comparison
 // test anything.
 
+#include "unit_test.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/grid_refinement.h>
 #include <deal.II/distributed/tria.h>
@@ -22,8 +24,6 @@
 
 #include <vefs/constraint_distribution.h>
 #include <vefs/transported_fields.h>
-
-#include "unit_test.h"
 
 #include <iostream>
 
@@ -48,8 +48,11 @@ namespace
         lower[d] = -1;
         upper[d] = 1;
       }
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation, std::vector<unsigned int>(dim, 2), lower, upper, true);
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              std::vector<unsigned int>(dim, 2),
+                                              lower,
+                                              upper,
+                                              true);
     // Periodic in x: boundary ids 0 and 1.
     std::vector<GridTools::PeriodicFacePair<
       typename parallel::distributed::Triangulation<dim>::cell_iterator>>
@@ -122,12 +125,12 @@ namespace
         << (sources_available(fields.constraints,
                               fields.owned_dofs,
                               fields.relevant_dofs,
-                              comm) ?
-              "yes" :
-              "no")
+                              comm)
+              ? "yes"
+              : "no")
         << '\n';
-    out << name << "constrained entries: "
-        << Utilities::MPI::sum(n_constrained, comm)
+    out << name
+        << "constrained entries: " << Utilities::MPI::sum(n_constrained, comm)
         << ", entries different from deal.II: "
         << Utilities::MPI::sum(n_different, comm) << '\n';
   }
@@ -186,11 +189,11 @@ namespace
       }
     const std::string name = std::to_string(dim) + "D blocks, ";
     out << name << "all sources on the rank: "
-        << (sources_available(constraints, owned, relevant, comm) ? "yes" :
-                                                                    "no")
+        << (sources_available(constraints, owned, relevant, comm) ? "yes"
+                                                                  : "no")
         << '\n';
-    out << name << "constrained entries: "
-        << Utilities::MPI::sum(n_constrained, comm)
+    out << name
+        << "constrained entries: " << Utilities::MPI::sum(n_constrained, comm)
         << ", entries different from deal.II: "
         << Utilities::MPI::sum(n_different, comm) << '\n';
   }

@@ -13,6 +13,8 @@
 // velocity of order 1, the contact rows are identities), u_y above 0.1
 // where released.
 
+#include "unit_test.h"
+
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
@@ -20,8 +22,6 @@
 
 #include <vefs/liquid_domain.h>
 #include <vefs/stokes_step.h>
-
-#include "unit_test.h"
 
 #include <cstdlib>
 #include <iostream>
@@ -77,13 +77,11 @@ namespace
     // Blocks |x -+ 0.5| < 0.27, y < 0.27 (edges inside cells).
     vefs::TransportedFields<2> fields(triangulation, false, {});
     fields.setup_dofs();
-    fields.interpolate(ScalarFunctionFromFunctionObject<2>(
-                         [](const Point<2> &p) {
-                           return std::max(std::abs(std::abs(p[0]) - 0.5) -
-                                             0.27,
-                                           p[1] - 0.27);
-                         }),
-                       ThrownBlocks());
+    fields.interpolate(
+      ScalarFunctionFromFunctionObject<2>([](const Point<2> &p) {
+        return std::max(std::abs(std::abs(p[0]) - 0.5) - 0.27, p[1] - 0.27);
+      }),
+      ThrownBlocks());
     const vefs::LiquidDomain<2> domain(fields);
 
     vefs::StokesStep<2> flow(parameters, triangulation);
@@ -100,14 +98,14 @@ namespace
     out << "contact set settled: " << (changed ? "no" : "yes") << '\n';
 
     // The normal velocity at the floor's nodes of liquid cells, owned.
-    const auto &dof_handler = flow.get_dof_handler();
-    const auto &solution    = flow.get_solution();
+    const auto                       &dof_handler = flow.get_dof_handler();
+    const auto                       &solution    = flow.get_solution();
     std::set<types::global_dof_index> seen;
-    unsigned int n_left = 0, n_left_in_contact = 0;
-    unsigned int n_right = 0, n_right_leaving = 0;
-    double       largest_left = 0, smallest_right = 1e300;
-    double       expected_length = 0;
-    const IndexSet owned = dof_handler.locally_owned_dofs();
+    unsigned int                      n_left = 0, n_left_in_contact = 0;
+    unsigned int                      n_right = 0, n_right_leaving = 0;
+    double                            largest_left = 0, smallest_right = 1e300;
+    double                            expected_length = 0;
+    const IndexSet                    owned = dof_handler.locally_owned_dofs();
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0)
         for (const unsigned int f : cell->face_indices())
@@ -117,8 +115,10 @@ namespace
                 expected_length += cell->face(f)->measure();
               for (const unsigned int v : cell->face(f)->vertex_indices())
                 {
-                  const auto dof = cell->face(f)->vertex_dof_index(
-                    v, 1, cell->active_fe_index());
+                  const auto dof =
+                    cell->face(f)->vertex_dof_index(v,
+                                                    1,
+                                                    cell->active_fe_index());
                   if (!owned.is_element(dof) || !seen.insert(dof).second)
                     continue;
                   const double u_y = solution(dof);
@@ -143,16 +143,16 @@ namespace
     out << "left block: wet floor nodes " << Utilities::MPI::sum(n_left, comm)
         << ", in contact (u_y = 0) "
         << Utilities::MPI::sum(n_left_in_contact, comm) << '\n';
-    out << "right block: wet floor nodes "
-        << Utilities::MPI::sum(n_right, comm) << ", leaving the wall (u_y > 0) "
+    out << "right block: wet floor nodes " << Utilities::MPI::sum(n_right, comm)
+        << ", leaving the wall (u_y > 0) "
         << Utilities::MPI::sum(n_right_leaving, comm) << '\n';
     expected_length = Utilities::MPI::sum(expected_length, comm);
     unit_test::check_below(out,
                            "contact length - left block's wet floor",
                            std::abs(flow.contact_measure() - expected_length),
                            1e-12);
-    out << "contact force positive: " << (flow.contact_force() > 0 ? "yes" : "no")
-        << '\n';
+    out << "contact force positive: "
+        << (flow.contact_force() > 0 ? "yes" : "no") << '\n';
   }
 } // namespace
 

@@ -13,13 +13,13 @@
 // Tolerance: 1e-12 (the polynomials and their derivatives are O(1), h =
 // 1/8).
 
+#include "unit_test.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/grid/grid_generator.h>
 
 #include <vefs/field_hermite.h>
-
-#include "unit_test.h"
 
 #include <functional>
 #include <iostream>

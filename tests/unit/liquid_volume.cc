@@ -15,6 +15,8 @@
 //   sphere: volume 5.3e-3, area 2.9e-3).
 // 1 and 2 ranks (the sums run over the owned cells of each rank).
 
+#include "unit_test.h"
+
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
@@ -22,8 +24,6 @@
 
 #include <vefs/box_q1_values.h>
 #include <vefs/liquid_domain.h>
-
-#include "unit_test.h"
 
 #include <iostream>
 
@@ -41,7 +41,7 @@ namespace
   Measures
   measure(const vefs::TransportedFields<dim> &fields)
   {
-    const auto                  sharp = vefs::sharp_liquid_volume(fields, 0.);
+    const auto                    sharp = vefs::sharp_liquid_volume(fields, 0.);
     const vefs::LiquidDomain<dim> domain(fields);
     vefs::BoxSurfaceValues<dim>   surface;
     double                        area = 0;
@@ -69,8 +69,11 @@ namespace
         lower[d] = -1;
         upper[d] = 1;
       }
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation, std::vector<unsigned int>(dim, 2), lower, upper, true);
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              std::vector<unsigned int>(dim, 2),
+                                              lower,
+                                              upper,
+                                              true);
   }
 
   template <int dim>
@@ -123,8 +126,8 @@ namespace
         volume = 4 * (offset / normal[top] + 1);
         area   = 4 / normal[top];
       }
-    const Measures measures = measure(fields);
-    const std::string name = std::to_string(dim) + "D plane, ";
+    const Measures    measures = measure(fields);
+    const std::string name     = std::to_string(dim) + "D plane, ";
     unit_test::check_below(out,
                            name + "volume, relative error",
                            std::abs(measures.volume - volume) / volume,
@@ -161,8 +164,7 @@ namespace
     std::vector<double> volume_errors, area_errors;
     for (unsigned int level = coarsest; level < coarsest + 3; ++level)
       {
-        parallel::distributed::Triangulation<dim> triangulation(
-          MPI_COMM_WORLD);
+        parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
         make_cavity(triangulation);
         triangulation.refine_global(level);
         vefs::TransportedFields<dim> fields(triangulation, false, {});

@@ -8,6 +8,8 @@
 // filled with the same entries (to 1e-14 relative: the order of the
 // entries within a row may differ).
 
+#include "unit_test.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_renumbering.h>
@@ -22,8 +24,6 @@
 #include <Epetra_CrsMatrix.h>
 #include <vefs/owned_rows_matrix.h>
 
-#include "unit_test.h"
-
 #include <algorithm>
 #include <iostream>
 
@@ -37,8 +37,8 @@ namespace
              const types::global_dof_index         row)
   {
     const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
-    const int               local  = epetra.RowMap().LID(
-      static_cast<TrilinosWrappers::types::int_type>(row));
+    const int               local =
+      epetra.RowMap().LID(static_cast<TrilinosWrappers::types::int_type>(row));
     int     n_entries;
     double *values;
     int    *local_columns;
@@ -69,14 +69,15 @@ namespace
     std::vector<unsigned int> blocks(dim + 1, 0);
     blocks[dim] = 1;
     DoFRenumbering::component_wise(dof_handler, blocks);
-    const auto n = DoFTools::count_dofs_per_fe_block(dof_handler, blocks);
+    const auto     n = DoFTools::count_dofs_per_fe_block(dof_handler, blocks);
     const IndexSet owned = dof_handler.locally_owned_dofs();
     IndexSet       relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-    const std::vector<IndexSet> owned_blocks = {
-      owned.get_view(0, n[0]), owned.get_view(n[0], n[0] + n[1])};
-    const std::vector<IndexSet> relevant_blocks = {
-      relevant.get_view(0, n[0]), relevant.get_view(n[0], n[0] + n[1])};
+    const std::vector<IndexSet> owned_blocks = {owned.get_view(0, n[0]),
+                                                owned.get_view(n[0],
+                                                               n[0] + n[1])};
+    const std::vector<IndexSet> relevant_blocks =
+      {relevant.get_view(0, n[0]), relevant.get_view(n[0], n[0] + n[1])};
 
     AffineConstraints<double> constraints(relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
@@ -107,8 +108,10 @@ namespace
           for (unsigned int j = 0; j < 2; ++j)
             for (const auto row : owned_blocks[i])
               for (const long long column : columns_of(theirs.block(i, j), row))
-                matrix->block(i, j).set(
-                  row, column, std::sin(0.3 * row + 0.7 * column) + (row == column));
+                matrix->block(i, j).set(row,
+                                        column,
+                                        std::sin(0.3 * row + 0.7 * column) +
+                                          (row == column));
         matrix->compress(VectorOperation::insert);
       }
     TrilinosWrappers::MPI::BlockVector x(owned_blocks, comm),
@@ -124,8 +127,8 @@ namespace
     out << name << "owned block rows: " << Utilities::MPI::sum(n_rows, comm)
         << ", with other columns than deal.II's: "
         << Utilities::MPI::sum(n_different_rows, comm) << '\n';
-    out << name << "entries: " << mine.n_nonzero_elements() << ", deal.II's: "
-        << theirs.n_nonzero_elements() << '\n';
+    out << name << "entries: " << mine.n_nonzero_elements()
+        << ", deal.II's: " << theirs.n_nonzero_elements() << '\n';
     unit_test::check_below(out,
                            name + "product - deal.II's, relative",
                            their_product.linfty_norm() /

@@ -7,6 +7,8 @@
 // Both are Q1 interpolation written out, so they agree with deal.II's
 // FEValues to round-off: below 1e-13 (values of order 1).
 
+#include "unit_test.h"
+
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
@@ -15,8 +17,6 @@
 
 #include <vefs/characteristics.h>
 #include <vefs/postprocessing.h>
-
-#include "unit_test.h"
 
 #include <iostream>
 
@@ -60,8 +60,11 @@ namespace
       }
     const std::vector<unsigned int>           subdivisions(dim, 2);
     parallel::distributed::Triangulation<dim> triangulation(comm);
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation, subdivisions, lower, upper, true);
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              subdivisions,
+                                              lower,
+                                              upper,
+                                              true);
     triangulation.refine_global(2);
     for (unsigned int cycle = 0; cycle < 2; ++cycle)
       {
@@ -100,8 +103,8 @@ namespace
 
     // deal.II's values, from the rank that owns each point's cell (it
     // throws on the others: the point is not in an owned cell there).
-    const unsigned int  n_values = dim + 1;
-    std::vector<double> reference(points.size() * n_values);
+    const unsigned int        n_values = dim + 1;
+    std::vector<double>       reference(points.size() * n_values);
     std::vector<unsigned int> n_owners(points.size());
     for (unsigned int i = 0; i < points.size(); ++i)
       {
@@ -125,8 +128,11 @@ namespace
     Utilities::MPI::sum(reference, comm, reference);
     Utilities::MPI::sum(n_owners, comm, n_owners);
 
-    const auto level_sets = vefs::level_set_at(
-      fields, points, locator, vefs::LevelSetInterpolation::linear);
+    const auto level_sets =
+      vefs::level_set_at(fields,
+                         points,
+                         locator,
+                         vefs::LevelSetInterpolation::linear);
     double       velocity_error = 0, level_set_error = 0;
     unsigned int n_not_one_owner = 0;
     for (unsigned int i = 0; i < points.size(); ++i)
@@ -135,11 +141,12 @@ namespace
         const Tensor<1, dim> u =
           vefs::probe_velocity(fields, locator, points[i]);
         for (unsigned int d = 0; d < dim; ++d)
-          velocity_error = std::max(velocity_error,
-                                    std::abs(u[d] - reference[i * n_values + d]));
-        level_set_error =
-          std::max(level_set_error,
-                   std::abs(level_sets[i].first - reference[i * n_values + dim]));
+          velocity_error =
+            std::max(velocity_error,
+                     std::abs(u[d] - reference[i * n_values + d]));
+        level_set_error = std::max(level_set_error,
+                                   std::abs(level_sets[i].first -
+                                            reference[i * n_values + dim]));
       }
     const std::string name = std::to_string(dim) + "D, ";
     out << name << "points: " << points.size()

@@ -17,6 +17,8 @@
 // Tolerance: relative error below 1e-12 (round-off of a few tens of
 // operations per step).
 
+#include "unit_test.h"
+
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
@@ -25,8 +27,6 @@
 #include <vefs/liquid_domain.h>
 #include <vefs/rheology.h>
 #include <vefs/stress.h>
-
-#include "unit_test.h"
 
 #include <iostream>
 
@@ -88,7 +88,7 @@ namespace
   check_updates(std::ostream &out)
   {
     const double       tau = 0.01, rate = 3;
-    const unsigned int n   = 50;
+    const unsigned int n     = 50;
     const double       gamma = n * tau * rate;
     Tensor<2, 2>       shear;
     shear[0][1] = rate;
@@ -96,8 +96,8 @@ namespace
     {
       const vefs::Rheology<2> elastic(
         material(0, vefs::StressUpdate::exponential));
-      const double            G = elastic.shear_modulus();
-      SymmetricTensor<2, 2>   sigma;
+      const double          G = elastic.shear_modulus();
+      SymmetricTensor<2, 2> sigma;
       for (unsigned int i = 0; i < n; ++i)
         sigma = elastic.updated_stress(sigma, shear, tau);
       Tensor<2, 2> F = unit_symmetric_tensor<2>();
@@ -154,8 +154,7 @@ namespace
           std::string("Oldroyd-B at rest, ") +
             (update == vefs::StressUpdate::linear ? "linear" : "exponential") +
             ", (lambda / (lambda + tau))^n sigma_0",
-          relative_error(sigma,
-                         std::pow(lambda / (lambda + tau), n) * initial),
+          relative_error(sigma, std::pow(lambda / (lambda + tau), n) * initial),
           1e-12);
       }
   }
@@ -163,7 +162,7 @@ namespace
   void
   check_field_update(std::ostream &out)
   {
-    const double tau = 0.02, rate = 3;
+    const double                            tau = 0.02, rate = 3;
     parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
     GridGenerator::hyper_cube(triangulation, 0, 1, true);
     triangulation.refine_global(3);
@@ -182,12 +181,11 @@ namespace
     for (unsigned int i = 0; i < 3; ++i)
       stress_values[i] = advected.access_raw_entry(i);
     // The plane x = 0.53 crosses a column of cells.
-    fields.interpolate(ScalarFunctionFromFunctionObject<2>(
-                         [](const Point<2> &p) { return p[0] - 0.53; }),
-                       SimpleShear(rate),
-                       std::make_unique<Functions::ConstantFunction<2>>(
-                         stress_values)
-                         .get());
+    fields.interpolate(
+      ScalarFunctionFromFunctionObject<2>(
+        [](const Point<2> &p) { return p[0] - 0.53; }),
+      SimpleShear(rate),
+      std::make_unique<Functions::ConstantFunction<2>>(stress_values).get());
 
     const vefs::LiquidDomain<2> domain(fields);
     const vefs::Rheology<2>     elastic(
@@ -202,8 +200,8 @@ namespace
         for (const unsigned int v : cell->vertex_indices())
           liquid_nodes.insert(cell->vertex_dof_index(v, 0));
 
-    Tensor<2, 2> F = unit_symmetric_tensor<2>();
-    F[0][1]        = tau * rate;
+    Tensor<2, 2> F                = unit_symmetric_tensor<2>();
+    F[0][1]                       = tau * rate;
     const double                G = elastic.shear_modulus();
     const SymmetricTensor<2, 2> B_advected =
       unit_symmetric_tensor<2>() + advected / G;
@@ -252,7 +250,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ostringstream text;
+  std::ostringstream               text;
   check_updates(text);
   check_field_update(text);
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)

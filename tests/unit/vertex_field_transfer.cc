@@ -8,6 +8,8 @@
 // constraints are distributed, up to the order of the sums (relative
 // difference below 1e-14; seen: 0).
 
+#include "unit_test.h"
+
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/solution_transfer.h>
@@ -15,8 +17,6 @@
 #include <deal.II/grid/grid_generator.h>
 
 #include <vefs/vertex_field_transfer.h>
-
-#include "unit_test.h"
 
 #include <iostream>
 
@@ -52,8 +52,8 @@ namespace
   void
   check(std::ostream &out)
   {
-    using VectorType           = typename vefs::TransportedFields<dim>::VectorType;
-    const MPI_Comm        comm = MPI_COMM_WORLD;
+    using VectorType = typename vefs::TransportedFields<dim>::VectorType;
+    const MPI_Comm                            comm = MPI_COMM_WORLD;
     parallel::distributed::Triangulation<dim> triangulation(comm);
     GridGenerator::hyper_cube(triangulation, -1, 1, true);
     triangulation.refine_global(dim == 2 ? 3 : 2);
@@ -105,11 +105,11 @@ namespace
       all_components.push_back(c);
     for (unsigned int d = 0; d < dim; ++d)
       gradient_components.push_back(d);
-    vefs::VertexFieldTransfer<dim> transfer(
-      triangulation,
-      fields,
-      {{&fields.fields, all_components},
-       {&fields.level_set_gradient, gradient_components}});
+    vefs::VertexFieldTransfer<dim> transfer(triangulation,
+                                            fields,
+                                            {{&fields.fields, all_components},
+                                             {&fields.level_set_gradient,
+                                              gradient_components}});
     parallel::distributed::SolutionTransfer<dim, VectorType> reference(
       fields.dof_handler);
     reference.prepare_for_coarsening_and_refinement(
@@ -139,9 +139,10 @@ namespace
     double difference = 0, largest = 0;
     for (const auto index : fields.owned_dofs)
       {
-        largest    = std::max(largest, std::abs(their_fields(index)));
-        difference = std::max(difference,
-                              std::abs(mine_fields(index) - their_fields(index)));
+        largest = std::max(largest, std::abs(their_fields(index)));
+        difference =
+          std::max(difference,
+                   std::abs(mine_fields(index) - their_fields(index)));
       }
     for (const auto &node : fields.nodes())
       for (unsigned int d = 0; d < dim; ++d)
