@@ -13,6 +13,9 @@
 //   at the finest level (h = 1/64 in 2D, 1/16 in 3D) stays below a bound
 //   about twice the one seen (circle: volume 1.1e-4, length 3.8e-5;
 //   sphere: volume 5.3e-3, area 2.9e-3).
+// - correct_volume() (free_surface.h), Newton's method on a constant added
+//   to psi: for the plane the shift that moves it by a given distance,
+//   exactly (1e-12), and for all shapes the target volume to 1e-12.
 // 1 and 2 ranks (the sums run over the owned cells of each rank).
 
 #include "unit_test.h"
@@ -23,6 +26,7 @@
 #include <deal.II/grid/grid_generator.h>
 
 #include <vefs/box_q1_values.h>
+#include <vefs/free_surface.h>
 #include <vefs/liquid_domain.h>
 
 #include <iostream>
@@ -140,6 +144,20 @@ namespace
                            name + "d volume / d shift + area, relative",
                            std::abs(measures.derivative + area) / area,
                            1e-12);
+
+    // correct_volume() to the volume of the plane moved by 0.05 along n:
+    // the shift of psi is -0.05, and the sharp volume then the target.
+    const double target = volume + 0.05 * area;
+    const double shift  = vefs::correct_volume(fields, target);
+    unit_test::check_below(out,
+                           name + "correct_volume, shift + 0.05",
+                           std::abs(shift + 0.05),
+                           1e-12);
+    unit_test::check_below(
+      out,
+      name + "correct_volume, relative volume error",
+      std::abs(vefs::sharp_liquid_volume(fields, 0.).volume - target) / target,
+      1e-12);
   }
 
   template <int dim>
@@ -162,6 +180,7 @@ namespace
       dim == 2 ? 2 * M_PI * radius : 4 * M_PI * radius * radius;
 
     std::vector<double> volume_errors, area_errors;
+    double              correction_error = 0;
     for (unsigned int level = coarsest; level < coarsest + 3; ++level)
       {
         parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
@@ -177,8 +196,20 @@ namespace
         const Measures measures = measure(fields);
         volume_errors.push_back(std::abs(measures.volume - volume) / volume);
         area_errors.push_back(std::abs(measures.area - area) / area);
+        // correct_volume() back to the exact volume: Newton's method to
+        // round-off (its last step from a residual below 1e-7).
+        vefs::correct_volume(fields, volume);
+        correction_error =
+          std::max(correction_error,
+                   std::abs(vefs::sharp_liquid_volume(fields, 0.).volume -
+                            volume) /
+                     volume);
       }
     const std::string name = dim == 2 ? "circle, " : "sphere, ";
+    unit_test::check_below(out,
+                           name + "after correct_volume, relative error",
+                           correction_error,
+                           1e-12);
     for (const auto &[errors, what, bound] :
          {std::make_tuple(volume_errors, "volume", volume_bound),
           std::make_tuple(area_errors, "area", area_bound)})
