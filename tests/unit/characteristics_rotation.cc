@@ -92,7 +92,7 @@ namespace
     const Point<dim> center = filled<dim>(0.05);
     // The generator of the rotation about a tilted axis (the z axis in 2D).
     Tensor<2, dim> A;
-    if (dim == 2)
+    if constexpr (dim == 2)
       {
         A[0][1] = -omega;
         A[1][0] = omega;
@@ -100,9 +100,9 @@ namespace
     else
       {
         Tensor<1, dim> n;
-        n[0]       = 1;
-        n[1]       = -2;
-        n[dim - 1] = 2;
+        n[0] = 1;
+        n[1] = -2;
+        n[2] = 2;
         n *= omega / n.norm();
         A[0][1] = -n[2];
         A[0][2] = n[1];
