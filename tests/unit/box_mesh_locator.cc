@@ -1,0 +1,162 @@
+// BoxMeshLocator (box_mesh_locator.h) against deal.II on a box of unequal
+// coarse cells, refined adaptively (cells of four levels, hanging nodes),
+// 1 and 2 ranks. At a lattice of points off the cell faces:
+// - locate() finds the cell GridTools::find_active_cell_around_point()
+//   finds (compared where that cell is owned or a ghost; the points in
+//   owned cells, summed over the ranks, are all points);
+// - unit_point() equals MappingQ1::transform_real_to_unit_cell() to 1e-14;
+// - owner_rank() is this rank exactly for the points in owned cells and
+//   another rank for the others.
+// And fold_into_cavity() wraps a periodic direction and moves points back
+// onto the other walls, a hair (1e-10 of the side) inside.
+
+#include "unit_test.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <vefs/compat/box_mesh_locator.h>
+
+#include <iostream>
+
+using namespace dealii;
+
+namespace
+{
+  template <int dim>
+  void
+  check(std::ostream &out)
+  {
+    const MPI_Comm     comm = MPI_COMM_WORLD;
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    // [0, 3] x [-1, 1] (x [0.5, 2]) in 3 x 2 (x 2) coarse cells.
+    const std::vector<unsigned int> subdivisions =
+      dim == 2 ? std::vector<unsigned int>{3, 2}
+               : std::vector<unsigned int>{3, 2, 2};
+    Point<dim> lower, upper;
+    lower[0] = 0;
+    upper[0] = 3;
+    lower[1] = -1;
+    upper[1] = 1;
+    if (dim == 3)
+      {
+        lower[dim - 1] = 0.5;
+        upper[dim - 1] = 2;
+      }
+    parallel::distributed::Triangulation<dim> triangulation(comm);
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              subdivisions,
+                                              lower,
+                                              upper,
+                                              true);
+    triangulation.refine_global(1);
+    // Refine around a point, three times: levels 1 to 4.
+    Point<dim> focus;
+    focus[0] = 1.1;
+    focus[1] = 0.2;
+    if (dim == 3)
+      focus[dim - 1] = 1.3;
+    for (unsigned int cycle = 0; cycle < 3; ++cycle)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              cell->center().distance(focus) < 1.2 - 0.35 * cycle)
+            cell->set_refine_flag();
+        triangulation.execute_coarsening_and_refinement();
+      }
+
+    std::array<vefs::WallType, 6> walls;
+    walls.fill(vefs::WallType::no_slip);
+    walls[2] = walls[3] = vefs::WallType::periodic;
+    const BoundingBox<dim>          cavity(std::make_pair(lower, upper));
+    const vefs::BoxMeshLocator<dim> locator(triangulation,
+                                            cavity,
+                                            subdivisions,
+                                            walls);
+    const MappingQ1<dim>            mapping;
+
+    // Steps that are no multiple of any cell size.
+    const unsigned int n        = dim == 2 ? 41 : 13;
+    unsigned int       n_points = 0, n_owned = 0, n_compared = 0;
+    unsigned int       wrong_cell = 0, wrong_owner = 0;
+    double             unit_point_error = 0;
+    for (unsigned int k = 0; k < std::pow(n, dim); ++k)
+      {
+        Point<dim>   p;
+        unsigned int rest = k;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            p[d] = lower[d] + (upper[d] - lower[d]) *
+                                (0.0123 + 0.9731 * (rest % n) / (n - 1));
+            rest /= n;
+          }
+        ++n_points;
+        const auto located = locator.locate(p);
+        const bool owned_here =
+          !located->is_artificial() && located->is_locally_owned();
+        n_owned += owned_here;
+        if ((locator.owner_rank(p) == rank) != owned_here)
+          ++wrong_owner;
+        if (located->is_artificial())
+          continue;
+        const auto [cell, xi] =
+          GridTools::find_active_cell_around_point(mapping, triangulation, p);
+        ++n_compared;
+        if (cell != located)
+          ++wrong_cell;
+        else
+          unit_point_error =
+            std::max(unit_point_error,
+                     xi.distance(
+                       vefs::BoxMeshLocator<dim>::unit_point(located, p)));
+      }
+
+    const std::string name = std::to_string(dim) + "D, ";
+    out << name << "mesh levels: " << triangulation.n_global_levels()
+        << ", points: " << n_points << ", in owned cells on all ranks: "
+        << Utilities::MPI::sum(n_owned, comm) << '\n';
+    out << name << "cells different from GridTools: "
+        << Utilities::MPI::sum(wrong_cell, comm) << '\n';
+    out << name
+        << "wrong owner ranks: " << Utilities::MPI::sum(wrong_owner, comm)
+        << '\n';
+    unit_test::check_below(out,
+                           name + "unit point - deal.II's",
+                           Utilities::MPI::max(unit_point_error, comm),
+                           1e-14);
+    // Compared at least at every point of the owned cells.
+    out << name << "compared at all points of owned cells: "
+        << (Utilities::MPI::sum(n_compared, comm) >= n_points ? "yes" : "no")
+        << '\n';
+
+    // y is periodic: 1.5 -> -0.5, -1.25 -> 0.75; x and z are clamped.
+    Point<dim> outside, folded;
+    outside[0] = -0.5;
+    outside[1] = 1.5;
+    folded[0]  = 3e-10;
+    folded[1]  = -0.5;
+    if (dim == 3)
+      {
+        outside[dim - 1] = 2.7;
+        folded[dim - 1]  = 2 - 1.5e-10;
+      }
+    unit_test::check_below(out,
+                           name + "fold_into_cavity error",
+                           locator.fold_into_cavity(outside).distance(folded),
+                           1e-15);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::ostringstream               text;
+  check<2>(text);
+  check<3>(text);
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    std::cout << text.str();
+}

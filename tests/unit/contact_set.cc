@@ -1,0 +1,167 @@
+// The contact set of the walls (contact_walls.h, design section 4), through
+// the flow step's own iteration (StokesStep::solve() and update_contact()
+// as the simulator calls them). Two separate blocks of liquid rest on a
+// contact floor, 2D, no gravity: the left one is thrown at the floor
+// (u* = (0, -1)), the right one away from it (u* = (0, 1)). They do not
+// touch, so each is a problem of its own with a known answer: every wet
+// floor node of the left block presses (stays in contact, u_y = 0 there),
+// every one of the right block pulls away (is released, and its velocity
+// then leaves the wall, u_y > 0). The contact length is then exactly the
+// floor faces of the left block's liquid cells; the floor pushes the
+// left block up (force > 0). 1 and 2 ranks.
+// Tolerance: |u_y| below 1e-6 in contact (solver tolerance 1e-10 on a
+// velocity of order 1, the contact rows are identities), u_y above 0.1
+// where released.
+
+#include "unit_test.h"
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/grid/grid_generator.h>
+
+#include <vefs/flow/stokes_step.h>
+#include <vefs/transport/liquid_domain.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <set>
+
+using namespace dealii;
+
+namespace
+{
+  /** u* = (0, -1) left of x = 0, (0, 1) right of it. */
+  class ThrownBlocks : public Function<2>
+  {
+  public:
+    ThrownBlocks()
+      : Function<2>(2)
+    {
+    }
+
+    double
+    value(const Point<2> &p, const unsigned int component) const override
+    {
+      return component == 0 ? 0. : (p[0] < 0 ? -1. : 1.);
+    }
+  };
+
+  void
+  check(std::ostream &out)
+  {
+    const MPI_Comm   comm = MPI_COMM_WORLD;
+    ParameterHandler prm;
+    vefs::Parameters::declare(prm);
+    vefs::Parameters parameters;
+    parameters.parse(prm);
+    parameters.dimension           = 2;
+    parameters.cavity_lower        = {-1, 0};
+    parameters.cavity_upper        = {1, 1};
+    parameters.coarse_subdivisions = {2, 1};
+    parameters.wall_type.fill(vefs::WallType::no_slip);
+    parameters.wall_type[2]     = vefs::WallType::contact;
+    parameters.gravity          = {0, 0};
+    parameters.relaxation_time  = 0;
+    parameters.flow_on_parents  = false;
+    parameters.solver_tolerance = 1e-10;
+
+    parallel::distributed::Triangulation<2> triangulation(comm);
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              {2, 1},
+                                              Point<2>(-1, 0),
+                                              Point<2>(1, 1),
+                                              true);
+    triangulation.refine_global(4);
+
+    // Blocks |x -+ 0.5| < 0.27, y < 0.27 (edges inside cells).
+    vefs::TransportedFields<2> fields(triangulation, false, {});
+    fields.setup_dofs();
+    fields.interpolate(
+      ScalarFunctionFromFunctionObject<2>([](const Point<2> &p) {
+        return std::max(std::abs(std::abs(p[0]) - 0.5) - 0.27, p[1] - 0.27);
+      }),
+      ThrownBlocks());
+    const vefs::LiquidDomain<2> domain(fields);
+
+    vefs::StokesStep<2> flow(parameters, triangulation);
+    const double        tau = 0.01;
+    flow.setup(domain, tau);
+    flow.assemble(fields, tau);
+    unsigned int n_solves = 0;
+    bool         changed  = true;
+    for (; changed && n_solves < 10; ++n_solves)
+      {
+        flow.solve(parameters.solver_tolerance);
+        changed = flow.update_contact(fields, tau);
+      }
+    out << "contact set settled: " << (changed ? "no" : "yes") << '\n';
+
+    // The normal velocity at the floor's nodes of liquid cells, owned.
+    const auto                       &dof_handler = flow.get_dof_handler();
+    const auto                       &solution    = flow.get_solution();
+    std::set<types::global_dof_index> seen;
+    unsigned int                      n_left = 0, n_left_in_contact = 0;
+    unsigned int                      n_right = 0, n_right_leaving = 0;
+    double                            largest_left = 0, smallest_right = 1e300;
+    double                            expected_length = 0;
+    const IndexSet                    owned = dof_handler.locally_owned_dofs();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0)
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f) && cell->face(f)->boundary_id() == 2)
+            {
+              if (cell->center()[0] < 0)
+                expected_length += cell->face(f)->measure();
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                {
+                  const auto dof =
+                    cell->face(f)->vertex_dof_index(v,
+                                                    1,
+                                                    cell->active_fe_index());
+                  if (!owned.is_element(dof) || !seen.insert(dof).second)
+                    continue;
+                  const double u_y = solution(dof);
+                  if (cell->face(f)->vertex(v)[0] < 0)
+                    {
+                      ++n_left;
+                      n_left_in_contact += std::abs(u_y) < 1e-6;
+                      largest_left = std::max(largest_left, std::abs(u_y));
+                    }
+                  else
+                    {
+                      ++n_right;
+                      n_right_leaving += u_y > 0.1;
+                      smallest_right = std::min(smallest_right, u_y);
+                    }
+                }
+            }
+    // The margins of the tolerances, for choosing them.
+    if (std::getenv("VEFS_UNIT_VERBOSE"))
+      std::cerr << "largest |u_y| left " << largest_left
+                << ", smallest u_y right " << smallest_right << '\n';
+    out << "left block: wet floor nodes " << Utilities::MPI::sum(n_left, comm)
+        << ", in contact (u_y = 0) "
+        << Utilities::MPI::sum(n_left_in_contact, comm) << '\n';
+    out << "right block: wet floor nodes " << Utilities::MPI::sum(n_right, comm)
+        << ", leaving the wall (u_y > 0) "
+        << Utilities::MPI::sum(n_right_leaving, comm) << '\n';
+    expected_length = Utilities::MPI::sum(expected_length, comm);
+    unit_test::check_below(out,
+                           "contact length - left block's wet floor",
+                           std::abs(flow.contact_measure() - expected_length),
+                           1e-12);
+    out << "contact force positive: "
+        << (flow.contact_force() > 0 ? "yes" : "no") << '\n';
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::ostringstream               text;
+  check(text);
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    std::cout << text.str();
+}

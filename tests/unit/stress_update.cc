@@ -1,0 +1,258 @@
+// The stress update of design section 2, step 4, against exact answers of
+// the discrete scheme:
+// - Rheology::updated_stress() of an elastic solid (alpha = 0, k = 1):
+//   the exponential update in a homogeneous simple shear (exp(tau L) =
+//   I + tau L) gives after n steps sigma = G (F F^T - I) with F = I +
+//   gamma e_x e_y^T, gamma = n tau gdot, exactly; in planar extension
+//   F = diag(e^(n tau e), e^(-n tau e)). The linear update in simple shear
+//   gives sigma_xy = G gamma, sigma_xx = G gamma^2 (1 - 1/n), sigma_yy = 0
+//   (by induction: sigma_xy grows by tau G gdot a step, sigma_xx by
+//   2 tau gdot sigma_xy).
+// - Oldroyd-B (alpha = 1) at rest: both updates multiply sigma by
+//   k = lambda / (lambda + tau) per step.
+// - update_stress() on a mesh with hanging nodes cut by a plane, in the
+//   same simple shear: every node of a liquid cell gets sigma of one step
+//   of the exponential update from the advected sigma*, the others keep
+//   sigma*. 1 and 2 ranks.
+// Tolerance: relative error below 1e-12 (round-off of a few tens of
+// operations per step).
+
+#include "unit_test.h"
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/grid/grid_generator.h>
+
+#include <vefs/stress/rheology.h>
+#include <vefs/stress/stress.h>
+#include <vefs/transport/liquid_domain.h>
+
+#include <iostream>
+
+using namespace dealii;
+
+namespace
+{
+  vefs::Parameters
+  material(const double alpha, const vefs::StressUpdate update)
+  {
+    ParameterHandler prm;
+    vefs::Parameters::declare(prm);
+    vefs::Parameters parameters;
+    parameters.parse(prm);
+    parameters.polymer_viscosity   = 2;
+    parameters.relaxation_time     = 0.5;
+    parameters.alpha               = alpha;
+    parameters.stress_update       = update;
+    parameters.max_strain_per_step = 0;
+    parameters.stress_theta        = 1;
+    return parameters;
+  }
+
+  double
+  relative_error(const SymmetricTensor<2, 2> &computed,
+                 const SymmetricTensor<2, 2> &exact)
+  {
+    return (computed - exact).norm() / exact.norm();
+  }
+
+  /** G (F F^T - I). */
+  SymmetricTensor<2, 2>
+  elastic_stress(const double G, const Tensor<2, 2> &F)
+  {
+    return G * (symmetrize(F * transpose(F)) - unit_symmetric_tensor<2>());
+  }
+
+  /** u = (gdot y, 0). */
+  class SimpleShear : public Function<2>
+  {
+  public:
+    explicit SimpleShear(const double rate)
+      : Function<2>(2)
+      , rate(rate)
+    {
+    }
+
+    double
+    value(const Point<2> &p, const unsigned int component) const override
+    {
+      return component == 0 ? rate * p[1] : 0.;
+    }
+
+  private:
+    const double rate;
+  };
+
+  void
+  check_updates(std::ostream &out)
+  {
+    const double       tau = 0.01, rate = 3;
+    const unsigned int n     = 50;
+    const double       gamma = n * tau * rate;
+    Tensor<2, 2>       shear;
+    shear[0][1] = rate;
+
+    {
+      const vefs::Rheology<2> elastic(
+        material(0, vefs::StressUpdate::exponential));
+      const double          G = elastic.shear_modulus();
+      SymmetricTensor<2, 2> sigma;
+      for (unsigned int i = 0; i < n; ++i)
+        sigma = elastic.updated_stress(sigma, shear, tau);
+      Tensor<2, 2> F = unit_symmetric_tensor<2>();
+      F[0][1]        = gamma;
+      unit_test::check_below(out,
+                             "exponential, simple shear, G (F F^T - I)",
+                             relative_error(sigma, elastic_stress(G, F)),
+                             1e-12);
+
+      Tensor<2, 2> extension;
+      extension[0][0] = 2;
+      extension[1][1] = -2;
+      sigma           = SymmetricTensor<2, 2>();
+      for (unsigned int i = 0; i < n; ++i)
+        sigma = elastic.updated_stress(sigma, extension, tau);
+      F       = Tensor<2, 2>();
+      F[0][0] = std::exp(2. * n * tau);
+      F[1][1] = std::exp(-2. * n * tau);
+      unit_test::check_below(out,
+                             "exponential, planar extension, G (F F^T - I)",
+                             relative_error(sigma, elastic_stress(G, F)),
+                             1e-12);
+    }
+
+    {
+      const vefs::Rheology<2> elastic(material(0, vefs::StressUpdate::linear));
+      const double            G = elastic.shear_modulus();
+      SymmetricTensor<2, 2>   sigma, exact;
+      for (unsigned int i = 0; i < n; ++i)
+        sigma = elastic.updated_stress(sigma, shear, tau);
+      exact[0][0] = G * gamma * gamma * (1 - 1. / n);
+      exact[0][1] = G * gamma;
+      unit_test::check_below(out,
+                             "linear, simple shear, discrete exact",
+                             relative_error(sigma, exact),
+                             1e-12);
+    }
+
+    for (const auto update :
+         {vefs::StressUpdate::linear, vefs::StressUpdate::exponential})
+      {
+        const auto              parameters = material(1, update);
+        const vefs::Rheology<2> liquid(parameters);
+        SymmetricTensor<2, 2>   initial, sigma;
+        initial[0][0] = 3;
+        initial[0][1] = -1;
+        initial[1][1] = 0.5;
+        sigma         = initial;
+        for (unsigned int i = 0; i < n; ++i)
+          sigma = liquid.updated_stress(sigma, Tensor<2, 2>(), tau);
+        const double lambda = parameters.relaxation_time;
+        unit_test::check_below(
+          out,
+          std::string("Oldroyd-B at rest, ") +
+            (update == vefs::StressUpdate::linear ? "linear" : "exponential") +
+            ", (lambda / (lambda + tau))^n sigma_0",
+          relative_error(sigma, std::pow(lambda / (lambda + tau), n) * initial),
+          1e-12);
+      }
+  }
+
+  void
+  check_field_update(std::ostream &out)
+  {
+    const double                            tau = 0.02, rate = 3;
+    parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
+    GridGenerator::hyper_cube(triangulation, 0, 1, true);
+    triangulation.refine_global(3);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->center()[1] < 0.4)
+        cell->set_refine_flag();
+    triangulation.execute_coarsening_and_refinement();
+
+    vefs::TransportedFields<2> fields(triangulation, true, {});
+    fields.setup_dofs();
+    SymmetricTensor<2, 2> advected;
+    advected[0][0] = 0.7;
+    advected[0][1] = -0.4;
+    advected[1][1] = 1.1;
+    Vector<double> stress_values(3);
+    for (unsigned int i = 0; i < 3; ++i)
+      stress_values[i] = advected.access_raw_entry(i);
+    // The plane x = 0.53 crosses a column of cells.
+    fields.interpolate(
+      ScalarFunctionFromFunctionObject<2>(
+        [](const Point<2> &p) { return p[0] - 0.53; }),
+      SimpleShear(rate),
+      std::make_unique<Functions::ConstantFunction<2>>(stress_values).get());
+
+    const vefs::LiquidDomain<2> domain(fields);
+    const vefs::Rheology<2>     elastic(
+      material(0, vefs::StressUpdate::exponential));
+    const auto report =
+      vefs::update_stress(fields, fields.fields, domain, elastic, tau, true);
+
+    // The nodes of liquid cells, owned or ghost.
+    std::set<types::global_dof_index> liquid_nodes;
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (!cell->is_artificial() && domain.has_liquid(cell))
+        for (const unsigned int v : cell->vertex_indices())
+          liquid_nodes.insert(cell->vertex_dof_index(v, 0));
+
+    Tensor<2, 2> F                = unit_symmetric_tensor<2>();
+    F[0][1]                       = tau * rate;
+    const double                G = elastic.shear_modulus();
+    const SymmetricTensor<2, 2> B_advected =
+      unit_symmetric_tensor<2>() + advected / G;
+    const SymmetricTensor<2, 2> updated =
+      G * (symmetrize(F * Tensor<2, 2>(B_advected) * transpose(F)) -
+           unit_symmetric_tensor<2>());
+
+    double       error_liquid = 0, error_other = 0;
+    unsigned int n_liquid = 0, n_other = 0;
+    for (const auto &node : fields.nodes())
+      {
+        SymmetricTensor<2, 2> sigma;
+        for (unsigned int i = 0; i < 3; ++i)
+          sigma.access_raw_entry(i) = fields.fields(
+            node.dofs[vefs::TransportedFields<2>::first_stress_component + i]);
+        if (liquid_nodes.count(node.dofs[0]))
+          {
+            error_liquid =
+              std::max(error_liquid, relative_error(sigma, updated));
+            ++n_liquid;
+          }
+        else
+          {
+            error_other = std::max(error_other, (sigma - advected).norm());
+            ++n_other;
+          }
+      }
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    unit_test::check_below(out,
+                           "update_stress, nodes of liquid cells",
+                           Utilities::MPI::max(error_liquid, comm),
+                           1e-12);
+    unit_test::check_zero(out,
+                          "update_stress, other nodes, |sigma - sigma*|",
+                          Utilities::MPI::max(error_other, comm));
+    out << "nodes of liquid cells: " << Utilities::MPI::sum(n_liquid, comm)
+        << ", other nodes: " << Utilities::MPI::sum(n_other, comm) << '\n';
+    unit_test::check_below(out,
+                           "largest velocity gradient - gdot",
+                           std::abs(report.max_velocity_gradient - rate),
+                           1e-12);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::ostringstream               text;
+  check_updates(text);
+  check_field_update(text);
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    std::cout << text.str();
+}

@@ -1,0 +1,55 @@
+#ifndef vefs_unit_test_h
+#define vefs_unit_test_h
+
+// Helpers shared by the unit tests (tests/README.md, "Unit tests"): what a
+// test prints must not depend on round-off, so errors are printed as
+// "below BOUND" when they are, and by value (which the expected output
+// does not hold) when they are not.
+
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <ostream>
+#include <sstream>
+#include <string>
+
+namespace unit_test
+{
+  /** "label: below bound", or "label: VALUE, NOT below bound". */
+  inline void
+  check_below(std::ostream      &out,
+              const std::string &label,
+              const double       error,
+              const double       bound)
+  {
+    // To see the values themselves when checking a bound by hand.
+    if (std::getenv("VEFS_UNIT_VERBOSE"))
+      std::cerr << label << ": " << std::setprecision(3) << error << '\n';
+    out << label << ": ";
+    if (error < bound)
+      out << "below " << bound << '\n';
+    else
+      out << std::setprecision(3) << error << ", NOT below " << bound << '\n';
+  }
+
+  /** "label: 0", or "label: VALUE (NOT zero)". */
+  inline void
+  check_zero(std::ostream &out, const std::string &label, const double value)
+  {
+    out << label << ": ";
+    if (value == 0)
+      out << "0\n";
+    else
+      out << std::setprecision(17) << value << " (NOT zero)\n";
+  }
+  /** @p value with few digits, for labels. */
+  inline std::string
+  text(const double value)
+  {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+  }
+} // namespace unit_test
+
+#endif
