@@ -468,7 +468,7 @@ namespace vefs
         "('Solver/Stress theta' = 0.5): the 2D stiff ball resting on the "
         "floor after its second contact gained 31.5 J/m in 0.15 s with "
         "updated and lost 0.9 J/m with extension "
-        "(doc/bouncing_ball_study.md).");
+        "(doc/bouncing_ball.md).");
       prm.declare_entry("Redistancing interval",
                         "1",
                         Patterns::Integer(0),
@@ -523,7 +523,7 @@ namespace vefs
         "h |u|); cubic (tensor-product cubic Hermite with nodal derivatives "
         "recovered from the Q1 field); limited cubic (cubic clipped to the "
         "range of the cell's nodal values: no new extrema). Measured on the "
-        "2D stiff ball in doc/bouncing_ball_study.md.");
+        "2D stiff ball in doc/bouncing_ball.md.");
       prm.declare_entry(
         "Stress interpolation",
         "linear",
@@ -537,7 +537,7 @@ namespace vefs
         "c is at least half that of the linear one, else linear; "
         "unsafeguarded, the 2D stiff ball lost positive definiteness at the "
         "impact and blew up). Measured on the 2D stiff ball in "
-        "doc/bouncing_ball_study.md.");
+        "doc/bouncing_ball.md.");
       prm.declare_entry("Volume correction",
                         "true",
                         Patterns::Bool(),
@@ -578,7 +578,7 @@ namespace vefs
                         "rho h^2/(tau mu) is large, and then the smoother does "
                         "most of the work: 4 keeps the iteration counts flat "
                         "under refinement (measured: 2D broken dam, levels "
-                        "5-9; 3D; doc/solver_iterations.md).");
+                        "5-9; 3D; doc/broken_dam.md).");
       prm.declare_entry(
         "Pressure stabilization",
         "0.25",
@@ -589,7 +589,7 @@ namespace vefs
         "pressure gradient is large: the stiff ball's "
         "lift-off and rebound only settled under refinement "
         "with 0.05 (its scene's value; 10-20 % more Krylov "
-        "iterations at 0.02-0.01; doc/bouncing_ball_study.md).");
+        "iterations at 0.02-0.01; doc/bouncing_ball.md).");
       prm.declare_entry(
         "Free surface stabilization",
         "0",
@@ -602,7 +602,7 @@ namespace vefs
         "is explicit, stable for tau below about 2 (h / (pi |g|))^(1/2), h "
         "the finest cell (0.010 s at h = 0.8 mm); 0.5 removes that limit "
         "but damps surface waves of frequency omega by about "
-        "exp(-pi omega tau / 2) per period (see doc/sharp_free_surface.md).");
+        "exp(-pi omega tau / 2) per period (see doc/standing_wave.md).");
       prm.declare_entry(
         "Stress update",
         "linear",
@@ -627,7 +627,7 @@ namespace vefs
         "Euler, which damps elastic oscillations (first order in tau); 0.5: "
         "the midpoint rule, which keeps the energy of a linear elastic "
         "oscillation. No effect on Newtonian liquids. See "
-        "doc/bouncing_ball_study.md.");
+        "doc/bouncing_ball.md.");
       prm.declare_entry("Ghost penalty",
                         "0.1",
                         Patterns::Double(0),
