@@ -1,12 +1,12 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
-#include <vefs/checkpoint.h>
-#include <vefs/parameter_file.h>
-#include <vefs/parameters.h>
-#include <vefs/simulator.h>
-#include <vefs/stokes_step.h>
-#include <vefs/stop_signal.h>
+#include <vefs/base/parameter_file.h>
+#include <vefs/base/parameters.h>
+#include <vefs/base/stop_signal.h>
+#include <vefs/core/simulator.h>
+#include <vefs/flow/stokes_step.h>
+#include <vefs/io/checkpoint.h>
 
 #include <chrono>
 #include <iostream>

@@ -1,0 +1,26 @@
+#ifndef vefs_resource_limits_h
+#define vefs_resource_limits_h
+
+#include <vefs/base/parameters.h>
+
+namespace vefs
+{
+  /** Number of cells the levels of @p parameters may need (an estimate). */
+  double
+  estimated_cells(const Parameters &parameters);
+
+  /** Bytes of memory a run needs per cell (measured, with a margin). */
+  double
+  bytes_per_cell(const unsigned int dimension);
+
+  /**
+   * Refuse a scene whose time step and end time imply more steps than
+   * 'Time/Maximum steps', or whose levels imply more memory than the
+   * machine has available: a run that would never end or end in
+   * std::bad_alloc hours later. Throws InputError.
+   */
+  void
+  check_resources(const Parameters &parameters);
+} // namespace vefs
+
+#endif

@@ -1,0 +1,162 @@
+#ifndef vefs_time_control_h
+#define vefs_time_control_h
+
+#include <vefs/base/parameters.h>
+
+#include <functional>
+
+namespace vefs
+{
+  /** The length of a step, and the step the velocity alone allowed. */
+  struct TimeStep
+  {
+    double tau;
+    /**
+     * The step the CFL and strain bounds allow, before the end time and
+     * output times shorten it (the health check watches it for collapse).
+     */
+    double controlled;
+  };
+
+  /**
+   * The clock of a run (doc/method.md, "One time step", step 1): the step
+   * number, the time, the length and CFL number of the step under way, the
+   * end time and the output times the steps land on. It chooses a step from
+   * the speeds of the last one; it holds no field.
+   */
+  class TimeControl
+  {
+  public:
+    /** @p finest_cell_size: the cell size of the CFL number. */
+    TimeControl(const Parameters &parameters, const double finest_cell_size);
+
+    /** Continue the run at @p step and @p time (from a checkpoint). */
+    void
+    resume(const unsigned int step, const double time, const double tau);
+
+    /**
+     * The step a flow allows whose last step had the speed @p max_velocity
+     * and the largest velocity gradient @p max_velocity_gradient: 'Time
+     * step', bounded by the target CFL number and the largest strain per
+     * step; from rest under gravity, the step after which gravity alone has
+     * moved the liquid by the target CFL number.
+     */
+    TimeStep
+    flow_time_step(const double max_velocity,
+                   const double max_velocity_gradient) const;
+
+    /**
+     * The step a prescribed velocity allows, with @p speed_at(t) its
+     * largest speed in the liquid at time t: the target CFL number holds
+     * for the speed at the start, middle and end of the step (a
+     * time-dependent velocity may speed up within the step).
+     */
+    TimeStep
+    prescribed_time_step(const std::function<double(double)> &speed_at) const;
+
+    /**
+     * @p step shortened to land on the end time and the next output time;
+     * a remainder shorter than a quarter step is shared with the step
+     * before it.
+     */
+    TimeStep
+    landed(const TimeStep step) const;
+
+    /** The CFL number of a step of length @p tau at @p max_velocity. */
+    double
+    cfl_of(const double tau, const double max_velocity) const
+    {
+      return tau * max_velocity / finest_cell_size;
+    }
+
+    /** Start the next step, of length @p tau, at the speed @p max_velocity. */
+    void
+    start_step(const double tau, const double max_velocity);
+
+    /** The step under way is done: the clock moves to its end. */
+    void
+    end_step();
+
+    /** Whether the end time is reached. */
+    bool
+    finished() const
+    {
+      return current_time >= end_time * (1 - 1e-12);
+    }
+
+    /** Whether the state now reached is written for visualization. */
+    bool
+    is_output_step() const;
+
+    unsigned int
+    step() const
+    {
+      return current_step;
+    }
+
+    /** The start of the step under way, its end once end_step() is done. */
+    double
+    time() const
+    {
+      return current_time;
+    }
+
+    /** The length of the step under way (or the last one). */
+    double
+    tau() const
+    {
+      return current_tau;
+    }
+
+    /** tau max|u| / h of the step under way, with the speed it started at. */
+    double
+    cfl() const
+    {
+      return current_cfl;
+    }
+
+    /**
+     * The CFL number the next step is expected to have: the target, or
+     * that of the step under way if larger (the surface moves about as far
+     * in the next step as in this one).
+     */
+    double
+    expected_cfl() const
+    {
+      return std::max(target_cfl, current_cfl);
+    }
+
+    /** The end time, for the estimate of the time left. */
+    double
+    end() const
+    {
+      return end_time;
+    }
+
+  private:
+    /** The first multiple of 'Output/Time interval' after @p time. */
+    double
+    next_output_time(const double time) const;
+
+    const double       end_time;
+    const double       time_step;
+    const double       target_cfl;
+    const double       max_strain_per_step;
+    const bool         strain_bound_shortens_step;
+    const double       output_time_interval;
+    const unsigned int output_interval;
+    const double       gravity;
+    const double       finest_cell_size;
+
+    unsigned int current_step = 0;
+    double       current_time = 0;
+    double       current_tau  = 0;
+    double       current_cfl  = 0;
+
+    /** The shortest step before an end or output time, as a fraction of the
+     * step before it. */
+    static constexpr double min_step_fraction = 0.25;
+  };
+} // namespace vefs
+
+#endif

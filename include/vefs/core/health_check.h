@@ -1,0 +1,50 @@
+#ifndef vefs_health_check_h
+#define vefs_health_check_h
+
+#include <vefs/base/parameters.h>
+#include <vefs/base/statistics.h>
+#include <vefs/fields/transported_fields.h>
+
+#include <string>
+
+namespace vefs
+{
+  /**
+   * The checks done at every step (doc/reliability.md: a run never ends with
+   * exit 0 and results that are not finite). Each returns what is wrong, naming
+   * the quantity and the entries to change, or an empty string; all are
+   * collective over the ranks of @p fields and agree on every rank.
+   */
+
+  /** Whether the level set, velocity and stress are finite everywhere. */
+  template <int dim>
+  bool
+  fields_are_finite(const TransportedFields<dim> &fields);
+
+  /**
+   * Before a step of length @p tau: its CFL number, the step count, and
+   * @p controlled_tau, the step that the CFL and strain bounds allow (before
+   * the end time and output times shorten it).
+   */
+  std::string
+  step_problem(const Parameters  &parameters,
+               const unsigned int step,
+               const double       tau,
+               const double       controlled_tau,
+               const double       cfl,
+               const double       max_velocity);
+
+  /**
+   * After a step: the fields, the volume, and @p non_finite_statistic, the
+   * statistics column found not finite (StatisticsFile::non_finite_column()),
+   * empty if none.
+   */
+  template <int dim>
+  std::string
+  state_problem(const Parameters             &parameters,
+                const TransportedFields<dim> &fields,
+                const StepStatistics<dim>    &statistics,
+                const std::string            &non_finite_statistic);
+} // namespace vefs
+
+#endif

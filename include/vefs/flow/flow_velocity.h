@@ -1,0 +1,91 @@
+#ifndef vefs_flow_velocity_h
+#define vefs_flow_velocity_h
+
+#include <deal.II/base/timer.h>
+
+#include <vefs/base/parameters.h>
+#include <vefs/flow/stokes_step.h>
+#include <vefs/stress/rheology.h>
+#include <vefs/transport/velocity_source.h>
+
+namespace vefs
+{
+  /**
+   * The velocity of a free-surface flow (doc/method.md, "One time step",
+   * steps 7-9): the Stokes-like step on the liquid domain, solved again
+   * while the contact set changes, then the copy of the new velocity to the
+   * transported fields, the stress update and the extension of both beyond
+   * the liquid for the next characteristics.
+   */
+  template <int dim>
+  class FlowVelocity : public VelocitySource<dim>
+  {
+  public:
+    /** @p flow: the Stokes step, also read by the visualization. */
+    FlowVelocity(const Parameters    &parameters,
+                 const Rheology<dim> &rheology,
+                 StokesStep<dim>     &flow,
+                 TimerOutput         &timer);
+
+    std::string
+    description() const override;
+
+    void
+    add_columns(StatisticsFile<dim> &statistics) const override;
+
+    void
+    set_initial_velocity(TransportedFields<dim> &fields) const override;
+
+    void
+    start(const LiquidDomain<dim> &domain, const double time) override;
+
+    TimeStep
+    time_step(const TimeControl            &time,
+              const StepStatistics<dim>    &last,
+              const TransportedFields<dim> &fields) const override;
+
+    void
+    set_advection_velocity(TransportedFields<dim> &fields,
+                           const TimeControl      &time) const override;
+
+    void
+    advance(TransportedFields<dim>  &fields,
+            const LiquidDomain<dim> &domain,
+            const TimeControl       &time,
+            StepStatistics<dim>     &statistics) override;
+
+    double
+    outflow(const double tau) const override;
+
+    void
+    measure(StepStatistics<dim> &statistics) const override;
+
+  private:
+    /**
+     * Solve the assembled step, again while the contact set changes; the
+     * Krylov iterations of all solves.
+     */
+    unsigned int
+    solve_with_contact(const TransportedFields<dim> &fields, const double tau);
+
+    /**
+     * Copy the new velocity to @p fields, update the stress, and extend
+     * both beyond the liquid, at least @p expected_cfl cells wide.
+     */
+    void
+    update_fields(TransportedFields<dim>  &fields,
+                  const LiquidDomain<dim> &domain,
+                  const double             tau,
+                  const double             expected_cfl,
+                  StepStatistics<dim>     &statistics);
+
+    const Parameters    &parameters;
+    const Rheology<dim> &rheology;
+    StokesStep<dim>     &flow;
+    TimerOutput         &timer;
+    /** Solves per step with contact walls, at the most. */
+    static constexpr unsigned int max_contact_iterations = 10;
+  };
+} // namespace vefs
+
+#endif

@@ -1,0 +1,37 @@
+#ifndef vefs_postprocessing_h
+#define vefs_postprocessing_h
+
+#include <deal.II/lac/vector.h>
+
+#include <vefs/base/parameters.h>
+#include <vefs/base/statistics.h>
+#include <vefs/compat/box_mesh_locator.h>
+#include <vefs/fields/transported_fields.h>
+#include <vefs/transport/liquid_domain.h>
+
+namespace vefs
+{
+  /** The velocity of @p fields at @p point, on every rank. */
+  template <int dim>
+  Tensor<1, dim>
+  probe_velocity(const TransportedFields<dim> &fields,
+                 const BoxMeshLocator<dim>    &locator,
+                 const Point<dim>             &point);
+
+  /**
+   * Measure the liquid domain of the flow step: volume, centroid, energies
+   * and the largest speed, and the extents of the liquid along
+   * the floor and up the x- wall (the broken-dam front and residual height).
+   */
+  template <int dim>
+  void
+  measure_step(const Parameters             &parameters,
+               const TransportedFields<dim> &fields,
+               const LiquidDomain<dim>      &domain,
+               const double                  initial_volume,
+               const double                  expected_volume,
+               StepStatistics<dim>          &statistics);
+
+} // namespace vefs
+
+#endif

@@ -1,0 +1,207 @@
+#ifndef vefs_rheology_h
+#define vefs_rheology_h
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <vefs/base/parameters.h>
+#include <vefs/stress/tensor_exponential.h>
+
+namespace vefs
+{
+  using namespace dealii;
+
+  /**
+   * The constitutive law of doc/method.md ("Equations") as the diffusion
+   * step sees it at one point, once sigma is eliminated (doc/method.md, "One
+   * time step", step 7):
+   *   sigma^{n+1}(u) = k [sigma* + tau (grad u sigma* + sigma* grad u^T)
+   *                       + tau (2 eta_p / lambda) eps(u)],
+   *   k = lambda / (lambda + alpha tau),
+   * with sigma* the advected stress. The momentum equation then has the
+   * effective viscosity mu = eta_s + tau eta_p / (lambda + alpha tau), the
+   * geometric term 2 k tau (grad u sigma*) : eps(v) and the right-hand side
+   * -k sigma* : eps(v). A Newtonian liquid has no stress: mu = eta_s + eta_p.
+   *
+   * With 'Stress theta' = theta < 1 the stress law sees the velocity
+   * u_theta = theta u + (1 - theta) u*, and the momentum equation the stress
+   * theta sigma^{n+1}(u) + (1 - theta) sigma*. For theta = 1/2 this is the
+   * midpoint rule, which keeps the energy of a linear elastic oscillation
+   * that the seed's backward Euler (theta = 1) damps. Written out, the
+   * momentum stress is
+   *   explicit_stress_factor sigma* + theta^2 k tau S(u) + theta (1 - theta)
+   *   k tau S(u*),   S(u) = grad u sigma* + sigma* grad u^T + 2 G eps(u),
+   * so the effective viscosity and the geometric term carry theta^2.
+   */
+  template <int dim>
+  class Rheology
+  {
+  public:
+    explicit Rheology(const Parameters &parameters)
+      : regime(parameters.regime())
+      , eta_s(parameters.solvent_viscosity)
+      , eta_p(parameters.polymer_viscosity)
+      , lambda(parameters.relaxation_time)
+      , alpha(parameters.alpha)
+      , update(parameters.stress_update)
+      , max_strain(parameters.max_strain_per_step)
+      , theta(parameters.stress_theta)
+    {
+    }
+
+    /** Oldroyd-B liquids and elastic solids carry a stress field. */
+    bool
+    has_stress() const
+    {
+      return regime != Regime::newtonian;
+    }
+
+    /** G = eta_p / lambda, the elastic modulus of the stress. */
+    double
+    shear_modulus() const
+    {
+      return eta_p / lambda;
+    }
+
+    double
+    effective_viscosity(const double tau) const
+    {
+      return has_stress()
+               ? eta_s + theta * theta * tau * eta_p / (lambda + alpha * tau)
+               : eta_s + eta_p;
+    }
+
+    /** k: how much of the advected stress survives the step. */
+    double
+    stress_factor(const double tau) const
+    {
+      return has_stress() ? lambda / (lambda + alpha * tau) : 0.;
+    }
+
+    /** The weight theta of the new velocity in the stress law. */
+    double
+    implicit_weight() const
+    {
+      return theta;
+    }
+
+    /** The factor of sigma* in the momentum stress: theta k + 1 - theta. */
+    double
+    explicit_stress_factor(const double tau) const
+    {
+      return has_stress() ? theta * stress_factor(tau) + 1 - theta : 0.;
+    }
+
+    /** The factor 2 theta^2 k tau of the geometric term (grad u sigma*). */
+    double
+    geometric_factor(const double tau) const
+    {
+      return 2 * theta * theta * stress_factor(tau) * tau;
+    }
+
+    /**
+     * The explicit part theta (1 - theta) k tau S(u*) of the momentum stress,
+     * zero for theta = 1.
+     */
+    SymmetricTensor<2, dim>
+    explicit_strain_stress(const SymmetricTensor<2, dim> &advected,
+                           const Tensor<2, dim>          &grad_u_star,
+                           const double                   tau) const
+    {
+      const Tensor<2, dim> stretching = grad_u_star * advected;
+      return theta * (1 - theta) * stress_factor(tau) * tau *
+             (symmetrize(stretching + transpose(stretching)) +
+              2 * shear_modulus() * symmetrize(grad_u_star));
+    }
+
+    /**
+     * sigma^{n+1} from the advected stress and the new velocity gradient L.
+     * With c = I + sigma / G (G = eta_p / lambda), both updates carry c* by
+     * L, then relax: c^{n+1} = I + k (c' - I). Linear: c' = c* + tau (L c*
+     * + c* L^T), the formula the diffusion step sees. Exponential: c' =
+     * exp(tau L) c* exp(tau L)^T, positive definite whatever tau |L| is,
+     * with the strain tau L limited to 'Maximum strain per step' (if set).
+     */
+    SymmetricTensor<2, dim>
+    updated_stress(const SymmetricTensor<2, dim> &advected,
+                   const Tensor<2, dim>          &grad_u,
+                   const double                   tau) const
+    {
+      if (update == StressUpdate::exponential)
+        {
+          const Tensor<2, dim> E =
+            tensor_exponential(limited_strain(grad_u, tau));
+          const Tensor<2, dim> carried =
+            E * Tensor<2, dim>(conformation(advected)) * transpose(E);
+          return stress_factor(tau) * shear_modulus() *
+                 (symmetrize(carried) - unit_symmetric_tensor<dim>());
+        }
+      const Tensor<2, dim> stretching = grad_u * advected;
+      return stress_factor(tau) *
+             (advected + tau * symmetrize(stretching + transpose(stretching)) +
+              (tau * 2 * eta_p / lambda) * symmetrize(grad_u));
+    }
+
+    /**
+     * The conformation tensor c = I + lambda sigma / eta_p (Oldroyd-B), or
+     * the left Cauchy-Green tensor B = I + sigma / G with G = eta_p / lambda
+     * (elastic solid): the same expression. Positive definite in the exact
+     * solution.
+     */
+    SymmetricTensor<2, dim>
+    conformation(const SymmetricTensor<2, dim> &sigma) const
+    {
+      return unit_symmetric_tensor<dim>() + (lambda / eta_p) * sigma;
+    }
+
+    /**
+     * Elastic (free) energy density G/2 (tr c - d - ln det c), G =
+     * eta_p / lambda: the free energy of the Oldroyd-B dumbbells, and for
+     * the incompressible neo-Hookean solid (det B = 1) its strain energy
+     * G/2 (tr B - d). It is non-negative for a positive definite c; where c
+     * is not, the logarithm is dropped (those points are counted apart).
+     */
+    double
+    elastic_energy_density(const SymmetricTensor<2, dim> &sigma) const
+    {
+      const SymmetricTensor<2, dim> c = conformation(sigma);
+      const double                  J = determinant(c);
+      return 0.5 * shear_modulus() *
+             (trace(c) - dim - (J > 0 ? std::log(J) : 0.));
+    }
+
+    /**
+     * The strain tau L of the exponential update, scaled down to the norm
+     * 'Maximum strain per step' where it is larger. The time step keeps it
+     * below that bound, except in a step it could not foresee, an impact:
+     * there the limiter stretches the stress less than the velocity would,
+     * which stores less elastic energy, where the unlimited exponential
+     * would store e^(2 tau |L|) times the stress and inject energy.
+     */
+    Tensor<2, dim>
+    limited_strain(const Tensor<2, dim> &grad_u, const double tau) const
+    {
+      const Tensor<2, dim> strain = tau * grad_u;
+      const double         norm   = strain.norm();
+      return is_strain_limited(grad_u, tau) ? (max_strain / norm) * strain
+                                            : strain;
+    }
+
+    /** Whether limited_strain() scales the strain of this step down. */
+    bool
+    is_strain_limited(const Tensor<2, dim> &grad_u, const double tau) const
+    {
+      return update == StressUpdate::exponential && max_strain > 0 &&
+             tau * grad_u.norm() > max_strain;
+    }
+
+  private:
+    const Regime       regime;
+    const double       eta_s, eta_p, lambda, alpha;
+    const StressUpdate update;
+    const double       max_strain;
+    const double       theta;
+  };
+} // namespace vefs
+
+#endif

@@ -1,0 +1,69 @@
+#ifndef vefs_stress_h
+#define vefs_stress_h
+
+#include <deal.II/lac/vector.h>
+
+#include <vefs/fields/transported_fields.h>
+#include <vefs/stress/rheology.h>
+#include <vefs/transport/liquid_domain.h>
+
+namespace vefs
+{
+  /** What the stress update reports of the velocity gradient it used. */
+  struct StressUpdateReport
+  {
+    /**
+     * Largest |grad u| (Frobenius norm) at the nodes updated: tau times it
+     * is the strain of one step, which the update resolves only if small.
+     */
+    double max_velocity_gradient = 0;
+    /** Node values (per cell) whose strain the limiter scaled down. */
+    unsigned int strain_limited_points = 0;
+  };
+
+  /**
+   * Step 9 of doc/method.md ("One time step"): the new stress sigma^{n+1} at
+   * the nodes of liquid cells, from the advected stress sigma* that @p fields
+   * holds there and the new velocity (already copied into @p fields). Each
+   * liquid cell carries the stress of its vertices by a velocity gradient:
+   * a full cell by its Q1 gradient at the vertex, a cut cell at all its
+   * vertices by the mean gradient over its liquid part (the gradient the
+   * flow step's stress term sees). The nodal value is the cell-volume
+   * weighted average of these, so that a liquid at rest keeps its stress
+   * exactly. A node outside the liquid may then carry at most a bounded
+   * multiple of the stretch of its cells' liquid nodes (stress.cc), unless
+   * @p outside_extended: the extension then overwrites those nodes. Other
+   * nodes keep their values (the extension overwrites them). The velocity
+   * gradient is taken from @p velocity, a vector with the layout of the
+   * fields: the fields themselves, or theta u + (1 - theta) u* for 'Stress
+   * theta' < 1. Returns the largest velocity gradient it met and how often
+   * the strain limiter acted.
+   */
+  template <int dim>
+  StressUpdateReport
+  update_stress(TransportedFields<dim>                            &fields,
+                const typename TransportedFields<dim>::VectorType &velocity,
+                const LiquidDomain<dim>                           &domain,
+                const Rheology<dim>                               &rheology,
+                const double                                       tau,
+                const bool outside_extended);
+
+  /** What the statistics report of the stress. */
+  struct StressMeasure
+  {
+    /** Rheology::elastic_energy_density() integrated over the liquid cells. */
+    double elastic_energy = 0;
+    /** Smallest eigenvalue of the conformation tensor c (or B). */
+    double min_conformation_eigenvalue = 1;
+    /** Quadrature points of liquid cells where c is not positive definite. */
+    unsigned int non_positive_points = 0;
+  };
+
+  template <int dim>
+  StressMeasure
+  measure_stress(const TransportedFields<dim> &fields,
+                 const LiquidDomain<dim>      &domain,
+                 const Rheology<dim>          &rheology);
+} // namespace vefs
+
+#endif

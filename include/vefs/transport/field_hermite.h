@@ -1,0 +1,90 @@
+#ifndef vefs_field_hermite_h
+#define vefs_field_hermite_h
+
+#include <vefs/fields/transported_fields.h>
+
+#include <array>
+
+namespace vefs
+{
+  /**
+   * Cubic Hermite interpolation of a transported field inside a cell, for
+   * the values at the feet of the characteristics: the level set, and
+   * optionally the flow fields. Linear interpolation there
+   * loses O(h^2) per step, so the shape error grows like h^2/tau as the step
+   * shrinks; the tensor-product cubic Hermite interpolant needs the nodal
+   * derivatives d^|S| psi / prod_{d in S} dx_d, S a nonempty set of
+   * directions (the gradient, the mixed second derivatives and, in 3D,
+   * d^3/dxdydz).
+   *
+   * Two sources of the derivatives:
+   * - recovered: all from the Q1 level set, averaging over the cells around a
+   *   node the derivatives of the cells' Q1 interpolants (central
+   *   differences on a uniform mesh): O(h^3) per step.
+   * - gradient augmented (Nave, Rosales & Seibold, J. Comput. Phys. 229,
+   *   2010): the gradient is the one carried along the characteristics in
+   *   TransportedFields::level_set_gradient, the mixed derivatives are
+   *   recovered from it the same way. The gradient holds what the nodal
+   *   values alone cannot (a filament a few cells thin), so the
+   *   interpolation stays accurate there.
+   * The interpolant is continuous across cells.
+   */
+  template <int dim>
+  class FieldHermite
+  {
+  public:
+    /** Sets S are bit masks 1 .. 2^dim - 1; derivative S is stored at S-1. */
+    static constexpr unsigned int n_derivatives = (1u << dim) - 1;
+
+    /**
+     * Make the nodal derivatives of the level set from the (ghosted) fields;
+     * with @p advected_gradient from the level set gradient of @p fields.
+     */
+    void
+    recover(const TransportedFields<dim> &fields, const bool advected_gradient);
+
+    /**
+     * Also make the nodal derivatives of @p components (not the level set)
+     * from their Q1 values, for component_value(); after recover(), whose
+     * level set derivatives stay.
+     */
+    void
+    recover_components(const TransportedFields<dim>    &fields,
+                       const std::vector<unsigned int> &components);
+
+    /**
+     * The level set at the unit-cell point @p xi of @p cell (locally owned
+     * or ghost), and its gradient in @p gradient if not null. With
+     * @p limited the value is clipped to the range of the cell's nodal
+     * values, which keeps cubic overshoots out of kinks.
+     */
+    double
+    value(const TransportedFields<dim>                         &fields,
+          const typename DoFHandler<dim>::active_cell_iterator &cell,
+          const Point<dim>                                     &xi,
+          const bool                                            limited,
+          Tensor<1, dim> *gradient = nullptr) const;
+
+    /** Like value(), for a component of recover_components(). */
+    double
+    component_value(const TransportedFields<dim> &fields,
+                    const typename DoFHandler<dim>::active_cell_iterator &cell,
+                    const Point<dim>                                     &xi,
+                    const unsigned int component,
+                    const bool         limited) const;
+
+  private:
+    double
+    interpolate(const TransportedFields<dim>                         &fields,
+                const typename DoFHandler<dim>::active_cell_iterator &cell,
+                const Point<dim>                                     &xi,
+                const unsigned int                                    component,
+                const bool                                            limited,
+                Tensor<1, dim> *gradient) const;
+
+    std::array<typename TransportedFields<dim>::VectorType, n_derivatives>
+      derivatives;
+  };
+} // namespace vefs
+
+#endif

@@ -1,0 +1,189 @@
+#ifndef vefs_mesh_adaptation_h
+#define vefs_mesh_adaptation_h
+
+#include <vefs/base/parameters.h>
+#include <vefs/fields/transported_fields.h>
+
+namespace vefs
+{
+  /** Material id of cells with liquid, for the weighted partitioning. */
+  constexpr types::material_id liquid_material_id = 1;
+
+  /**
+   * Refinement levels tied to the free surface (doc/method.md, "One time step",
+   * step 5): the finest level in a band around psi = 0, the bulk level inside
+   * the liquid, the minimum level in the empty cavity.
+   */
+  class MeshLevels
+  {
+  public:
+    MeshLevels(const Parameters &parameters);
+
+    /**
+     * Widen the band for steps of @p cfl finest cells (at least the
+     * parameter "Band width"): the surface must not leave it in one step.
+     * With 'Band placement = predicted' the band keeps its width, and @p cfl
+     * says how far around the surface the adaptation after an advection
+     * keeps the cells the refinement ahead made one level below the finest.
+     */
+    void
+    expect_cfl(const double cfl);
+
+    /** A level set on a cell: its lowest and highest nodal values, slope. */
+    struct CellLevelSet
+    {
+      double lowest;
+      double highest;
+      double slope;
+    };
+
+    /**
+     * The levels a cell with the level set @p present may keep: it is
+     * refined below the first, coarsened above the second. Widened band:
+     * the target of the surface. After an advection with 'Band placement =
+     * predicted': anything from the band's target up to the halo's level
+     * (one below the finest) within the CFL number's reach (expect_cfl()).
+     */
+    std::pair<unsigned int, unsigned int>
+    allowed_levels(const CellLevelSet &present) const;
+
+    /**
+     * Refined ahead ('Band placement = predicted'): the finer of the
+     * @p present surface's target (its band only) and that of the predicted
+     * surface @p ahead, with a halo one level below the finest within
+     * @p motion (how far the surface moves at the cell in the step) and two
+     * finest cells more.
+     */
+    std::pair<unsigned int, unsigned int>
+    allowed_levels(const CellLevelSet &present,
+                   const CellLevelSet &ahead,
+                   const double        motion) const;
+
+    /** The same for the predicted surface @p ahead alone. */
+    std::pair<unsigned int, unsigned int>
+    allowed_levels(const CellLevelSet &ahead, const double motion) const;
+
+    /** Size of the finest cells (their shortest edge). */
+    double finest_cell_size;
+
+    const unsigned int min_level, bulk_level, max_level;
+
+  private:
+    /**
+     * The level of a cell with the level set @p psi. Where psi has been
+     * stretched (slope above 1) psi underestimates the distance to the
+     * surface by that factor, and the band is measured in psi / slope.
+     * Beyond the band but within @p reach of the surface: one level below
+     * the finest (at least the level away from the surface).
+     */
+    unsigned int
+    target_level(const CellLevelSet &psi, const double reach) const;
+
+    double band_width;
+    bool   band_predicted;
+    /** Half width of the band of finest cells around the surface. */
+    double band_half_width;
+    /** How far the surface can move in a step, by the CFL number (at least
+     * the band). */
+    double reach_half_width;
+  };
+
+  /**
+   * What a change of the mesh before an advection ('Band placement =
+   * predicted') does with the band of the present surface.
+   */
+  enum class PresentBand
+  {
+    /** Keep it: the adaptation after the advection coarsens it. */
+    kept,
+    /**
+     * Coarsen it in the same change; the coarsened cells keep their fields
+     * for the advection in TransportedFields::coarsened_detail.
+     */
+    coarsened,
+    /**
+     * A further cycle after 'coarsened': refine only, carrying the detail
+     * along.
+     */
+    refine_only
+  };
+
+  /**
+   * Refine and coarsen toward the target levels, transferring the fields,
+   * at most @p max_cycles times (each changes a cell by one level) or until
+   * the mesh stops changing. Returns true if it changed. In the time loop
+   * one cycle a step suffices: the band is wider than the surface moves.
+   * Unless @p interpolation is linear, the level set at new vertices is the
+   * cubic one of the refined cell, not the Q1 one. If @p surface_ahead is
+   * given (the level set the next advection will give, predict_level_set()),
+   * cells take the finer of the levels the two level sets ask for, and
+   * @p surface_ahead is transferred too. Ahead of the surface, the cells
+   * within a step's motion of the predicted surface (|@p surface_ahead -
+   * psi| at the cell, and two finest cells more) are brought one level below
+   * the finest, so that the next refinement ahead takes one cycle: where the
+   * surface moves slowly this halo is thin, where it moves fast as wide as
+   * the motion. The adaptation after the advection then keeps such cells
+   * within the CFL number's reach (MeshLevels::expect_cfl()) as they are.
+   * @p present_band says whether the present surface's band is kept too.
+   */
+  template <int dim>
+  bool
+  adapt_mesh(
+    parallel::distributed::Triangulation<dim>   &triangulation,
+    TransportedFields<dim>                      &fields,
+    const MeshLevels                            &levels,
+    const unsigned int                           max_cycles,
+    const LevelSetInterpolation                  interpolation,
+    typename TransportedFields<dim>::VectorType *surface_ahead = nullptr,
+    const PresentBand present_band = PresentBand::kept);
+
+  /** The cells the surface (psi = 0) crosses, over all ranks. */
+  struct SurfaceCells
+  {
+    /** Those coarser than the finest level. */
+    unsigned int coarse = 0;
+    /** All of them. */
+    unsigned int total = 0;
+  };
+
+  /**
+   * The cells the surface crosses, and those of them coarser than
+   * @p max_level: right after an advection, where the band of finest cells
+   * did not keep up with the surface.
+   */
+  template <int dim>
+  SurfaceCells
+  count_surface_cells(const TransportedFields<dim> &fields,
+                      const unsigned int            max_level);
+
+  /** The same for the level set slot of @p level_set (layout of the fields). */
+  template <int dim>
+  SurfaceCells
+  count_surface_cells(
+    const TransportedFields<dim>                      &fields,
+    const typename TransportedFields<dim>::VectorType &level_set,
+    const unsigned int                                 max_level);
+
+  /**
+   * Before an advection ('Band placement = predicted'): adapt the mesh
+   * toward the present surface and @p surface_ahead, the level set the
+   * advection will give (predict_level_set()), one cycle at a time until
+   * the predicted surface lies in cells of the finest level, at most
+   * @p max_cycles times. With @p coarsen_present_band the first cycle also
+   * coarsens the present band (PresentBand::coarsened), and the ghost cells
+   * get the coarsened cells' detail at the end. Returns the number of mesh
+   * changes made.
+   */
+  template <int dim>
+  unsigned int
+  refine_ahead_of_surface(
+    parallel::distributed::Triangulation<dim>   &triangulation,
+    TransportedFields<dim>                      &fields,
+    const MeshLevels                            &levels,
+    const unsigned int                           max_cycles,
+    const LevelSetInterpolation                  interpolation,
+    typename TransportedFields<dim>::VectorType &surface_ahead,
+    const bool                                   coarsen_present_band);
+} // namespace vefs
+
+#endif

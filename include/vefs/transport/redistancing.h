@@ -1,0 +1,28 @@
+#ifndef vefs_redistancing_h
+#define vefs_redistancing_h
+
+#include <vefs/base/parameters.h>
+#include <vefs/fields/transported_fields.h>
+
+namespace vefs
+{
+  /**
+   * Make the level set a signed distance again away from the free surface.
+   * Advection along characteristics stretches psi, and where the liquid has
+   * left, psi keeps small values that would hold the finest mesh there.
+   * The nodes of cells cut by the surface keep their values, so the zero
+   * level set (and the volume) does not move; every other node gets the
+   * distance to the surface's crossings of cell edges, gathered from all
+   * ranks, with the sign it had. The crossings are those of the level set as
+   * the transport interpolates it (@p interpolation: Q1, or cubic Hermite,
+   * whose zero set differs from the Q1 one by O(h^2)); the level set
+   * gradient of those nodes becomes the unit vector away from the nearest
+   * crossing.
+   */
+  template <int dim>
+  void
+  redistance(TransportedFields<dim>     &fields,
+             const LevelSetInterpolation interpolation);
+} // namespace vefs
+
+#endif

@@ -1,0 +1,442 @@
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <vefs/core/health_check.h>
+#include <vefs/core/simulator.h>
+#include <vefs/flow/flow_velocity.h>
+#include <vefs/flow/prescribed_velocity.h>
+#include <vefs/io/checkpoint.h>
+#include <vefs/stress/stress.h>
+#include <vefs/transport/free_surface.h>
+#include <vefs/transport/initial_liquid.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace vefs
+{
+  namespace
+  {
+    std::string
+    printed(const ParameterHandler &prm)
+    {
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::PRM);
+      return text.str();
+    }
+  } // namespace
+
+  template <int dim>
+  Simulator<dim>::Simulator(const Parameters       &parameters,
+                            const ParameterHandler &prm,
+                            const std::string      &checkpoint)
+    : parameters(parameters)
+    , parameters_text(printed(prm))
+    , checkpoint(checkpoint)
+    , rheology(parameters)
+    , comm(MPI_COMM_WORLD)
+    , output(parameters.output_directory, comm, !checkpoint.empty())
+    , pcout(std::cout,
+            parameters.verbose && Utilities::MPI::this_mpi_process(comm) == 0)
+    , timer(comm,
+            pcout,
+            parameters.verbose ? TimerOutput::summary : TimerOutput::never,
+            TimerOutput::wall_times)
+    // Each mesh change rebuilds the local mesh from the coarse cells instead
+    // of refining and coarsening it until it matches p4est's: fewer passes
+    // on several ranks, and the cells lie in memory in p4est's order (the
+    // space-filling curve), which every loop over them gains from
+    // (doc/bouncing_ball_3d_study.md, "The local mesh rebuilt from the
+    // coarse cells").
+    , triangulation(comm,
+                    Triangulation<dim>::limit_level_difference_at_vertices,
+                    parallel::distributed::Triangulation<
+                      dim>::mesh_reconstruction_after_repartitioning)
+    , cavity(std::make_pair(to_point<dim>(parameters.cavity_lower),
+                            to_point<dim>(parameters.cavity_upper)))
+    , levels(parameters)
+    , time(parameters, levels.finest_cell_size)
+    , fields(triangulation,
+             rheology.has_stress(),
+             parameters.periodic_directions())
+    , flow(parameters, triangulation)
+    , statistics_file(output.path(), comm, !checkpoint.empty())
+    , visualization(parameters.output_directory)
+    , checkpoints(parameters, comm, pcout)
+  {
+    if (parameters.velocity_is_prescribed())
+      velocity = std::make_unique<PrescribedVelocity<dim>>(parameters);
+    else
+      velocity =
+        std::make_unique<FlowVelocity<dim>>(parameters, rheology, flow, timer);
+    if (!parameters.exact_final_level_set.empty())
+      exact_final_level_set = make_exact_final_level_set<dim>(parameters);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ofstream file(parameters.output_directory + "/parameters.prm");
+        file << parameters_text;
+      }
+  }
+
+  template <int dim>
+  RunEnd
+  Simulator<dim>::run()
+  {
+    LiquidDomain<dim> domain = start();
+    for (unsigned int steps_done = 1; !time.finished(); ++steps_done)
+      {
+        // 1. The step's length, from the speeds of the last one.
+        start_step(domain);
+        // 2.-4. Every field along the characteristics; the level set
+        // redistanced and corrected to the expected volume.
+        surface->advect(fields, *velocity, time, statistics);
+        // 5.-6. The mesh adapted to the new surface; its liquid domain.
+        domain = surface->adapt_mesh(fields, time, statistics);
+        // 7.-9. The new velocity (and stress) on the liquid domain, extended
+        // beyond it.
+        advance_velocity(domain);
+        time.end_step();
+        report(domain);
+        if (const auto end = checkpoint_if_due(steps_done))
+          return *end;
+      }
+    return {};
+  }
+
+  template <int dim>
+  LiquidDomain<dim>
+  Simulator<dim>::start()
+  {
+    pcout << "vefs: " << dim << "D " << velocity->description() << " on "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s), output in "
+          << parameters.output_directory << "/" << std::endl;
+    {
+      TimerOutput::Scope scope(timer, "initial state");
+      make_cavity();
+      surface = std::make_unique<SurfaceTracker<dim>>(parameters,
+                                                      triangulation,
+                                                      levels,
+                                                      *locator,
+                                                      rheology.shear_modulus(),
+                                                      timer);
+      add_scene_columns();
+      if (checkpoint.empty())
+        set_initial_state();
+      else
+        resume();
+    }
+    LiquidDomain<dim> domain(fields);
+    velocity->start(domain, time.time());
+    // A resumed run has the row of its first step already.
+    if (checkpoint.empty())
+      report(domain);
+    else
+      pcout << "resumed at step " << time.step() << " (t = " << time.time()
+            << ") from " << checkpoint << "/" << std::endl;
+    return domain;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::add_scene_columns()
+  {
+    if (exact_final_level_set)
+      {
+        // Measured at the end time only: NaN before.
+        statistics_file.add_column(
+          "shape_error",
+          [](const auto &s) { return s.shape_error; },
+          10,
+          false);
+        statistics_file.add_column("interface_thickness", [](const auto &s) {
+          return s.interface_thickness;
+        });
+      }
+    if (rheology.has_stress())
+      {
+        statistics_file.add_column("min_conformation_eigenvalue",
+                                   [](const auto &s) {
+                                     return s.min_conformation_eigenvalue;
+                                   });
+        statistics_file.add_column("non_positive_conformation_points",
+                                   [](const auto &s) {
+                                     return s.non_positive_conformation_points;
+                                   });
+      }
+    velocity->add_columns(statistics_file);
+    surface->add_columns(statistics_file);
+    if (!parameters.probe_point.empty())
+      for (unsigned int d = 0; d < dim; ++d)
+        statistics_file.add_column(std::string("probe_u_") + "xyz"[d],
+                                   [d](const auto &s) {
+                                     return s.probe_velocity[d];
+                                   });
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::make_cavity()
+  {
+    std::vector<unsigned int> subdivisions(
+      parameters.coarse_subdivisions.begin(),
+      parameters.coarse_subdivisions.end());
+    // colorize: boundary ids 0..2dim-1 for the walls x-, x+, y-, y+, z-, z+.
+    GridGenerator::subdivided_hyper_rectangle(
+      triangulation,
+      subdivisions,
+      cavity.get_boundary_points().first,
+      cavity.get_boundary_points().second,
+      true);
+    for (const unsigned int d : parameters.periodic_directions())
+      {
+        std::vector<GridTools::PeriodicFacePair<
+          typename parallel::distributed::Triangulation<dim>::cell_iterator>>
+          pairs;
+        GridTools::collect_periodic_faces(triangulation,
+                                          2 * d,
+                                          2 * d + 1,
+                                          d,
+                                          pairs);
+        triangulation.add_periodicity(pairs);
+      }
+    // p4est balances the work: a cell with liquid costs the flow solve, an
+    // empty one only the transport. A family to be coarsened is weighed
+    // through its parent, whose own mark dates from its refinement: it has
+    // liquid if a child has.
+    triangulation.signals.weight.connect(
+      [](const typename Triangulation<dim>::cell_iterator &cell,
+         const typename Triangulation<dim>::CellStatus status) -> unsigned int {
+        bool liquid = cell->material_id() == liquid_material_id;
+        if (status == Triangulation<dim>::CELL_COARSEN)
+          {
+            AssertThrow(cell->has_children(), ExcInternalError());
+            liquid = false;
+            for (const auto &child : cell->child_iterators())
+              liquid |= child->material_id() == liquid_material_id;
+          }
+        return liquid ? 4 : 1;
+      });
+    locator = std::make_unique<BoxMeshLocator<dim>>(triangulation,
+                                                    cavity,
+                                                    subdivisions,
+                                                    parameters.wall_type);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::set_initial_state()
+  {
+    const auto level_set        = make_initial_level_set<dim>(parameters);
+    const auto initial_velocity = make_initial_velocity<dim>(parameters);
+    const auto stress           = make_initial_stress<dim>(parameters);
+    triangulation.refine_global(parameters.min_level);
+    fields.setup_dofs();
+    // Refine toward the initial surface, evaluating it exactly on each mesh.
+    // A level set whose slope varies may make a cell and its children want
+    // different levels: the cycles are bounded.
+    for (unsigned int cycle = 0;; ++cycle)
+      {
+        fields.interpolate(*level_set, *initial_velocity, stress.get());
+        if (cycle == parameters.max_level ||
+            !adapt_mesh(triangulation,
+                        fields,
+                        levels,
+                        1,
+                        LevelSetInterpolation::linear))
+          break;
+      }
+    velocity->set_initial_velocity(fields);
+    const double initial_volume = sharp_liquid_volume(fields, 0).volume;
+    surface->set_initial_volume(initial_volume);
+    if (!std::isfinite(initial_volume) || !fields_are_finite(fields))
+      throw InputError("entry 'Initial liquid/Shape': the initial level set, "
+                       "velocity or stress is not finite somewhere in the "
+                       "cavity (check 'Initial liquid/Level set expression', "
+                       "'Initial liquid/Velocity', 'Initial liquid/Stress')");
+    if (!(initial_volume > 0))
+      throw InputError("entry 'Initial liquid/Shape': the initial liquid "
+                       "does not intersect the cavity");
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::resume()
+  {
+    const RunState<dim> state =
+      read_checkpoint(checkpoint, triangulation, fields, surface->history());
+    surface->resume(state.initial_volume, state.expected_volume);
+    last_output_step = state.last_output_step;
+    wall_time_offset = state.statistics.wall_time;
+    visualization.resume(state.visualization_series);
+    statistics_file.resume(state.statistics.step);
+    statistics = state.statistics;
+    time.resume(statistics.step, statistics.time, statistics.tau);
+    pcout << "resumed at step " << statistics.step
+          << " (t = " << statistics.time << ") from " << checkpoint << "/"
+          << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::start_step(const LiquidDomain<dim> &domain)
+  {
+    const TimeStep step =
+      time.landed(velocity->time_step(time, statistics, fields));
+    const double cfl = time.cfl_of(step.tau, statistics.max_velocity);
+    // Checked before the step, while the state is still good.
+    const std::string problem = step_problem(parameters,
+                                             time.step() + 1,
+                                             step.tau,
+                                             step.controlled,
+                                             cfl,
+                                             statistics.max_velocity);
+    if (!problem.empty())
+      stop(time.step() + 1, problem, domain, true);
+    time.start_step(step.tau, statistics.max_velocity);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::advance_velocity(const LiquidDomain<dim> &domain)
+  {
+    std::string failure;
+    try
+      {
+        velocity->advance(fields, domain, time, statistics);
+      }
+    catch (const SolverError &error)
+      {
+        failure = error.what();
+      }
+    if (!failure.empty())
+      stop(time.step(), failure, domain, false);
+    surface->remove_outflow(velocity->outflow(time.tau()));
+  }
+
+  template <int dim>
+  std::optional<RunEnd>
+  Simulator<dim>::checkpoint_if_due(const unsigned int steps_done)
+  {
+    if (time.finished())
+      return {};
+    return checkpoints.after_step(time.step(), time.time(), steps_done, [&]() {
+      TimerOutput::Scope  scope(timer, "checkpoint");
+      const RunState<dim> state{statistics,
+                                surface->initial_volume(),
+                                surface->expected_volume(),
+                                last_output_step,
+                                visualization.get_series()};
+      return write_checkpoint(parameters.output_directory,
+                              parameters_text,
+                              fields,
+                              surface->history(),
+                              state);
+    });
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::report(const LiquidDomain<dim> &domain)
+  {
+    statistics.step = time.step();
+    statistics.time = time.time();
+    statistics.tau  = time.tau();
+    statistics.cfl  = time.cfl();
+    {
+      TimerOutput::Scope scope(timer, "postprocessing");
+      measure_step(parameters,
+                   fields,
+                   domain,
+                   surface->initial_volume(),
+                   surface->expected_volume(),
+                   statistics);
+      velocity->measure(statistics);
+      if (rheology.has_stress())
+        {
+          const StressMeasure stress = measure_stress(fields, domain, rheology);
+          statistics.elastic_energy  = stress.elastic_energy;
+          statistics.min_conformation_eigenvalue =
+            stress.min_conformation_eigenvalue;
+          statistics.non_positive_conformation_points =
+            stress.non_positive_points;
+        }
+      if (!parameters.probe_point.empty())
+        statistics.probe_velocity =
+          probe_velocity(fields,
+                         *locator,
+                         to_point<dim>(parameters.probe_point));
+      if (exact_final_level_set)
+        {
+          // Only the final shape is known exactly.
+          statistics.shape_error =
+            time.finished() ? shape_error(fields, *exact_final_level_set)
+                            : std::numeric_limits<double>::quiet_NaN();
+          statistics.interface_thickness =
+            interface_thickness(fields, levels.finest_cell_size);
+        }
+      statistics.wall_time = wall_time_offset + wall_clock.wall_time();
+    }
+    {
+      TimerOutput::Scope scope(timer, "health check");
+      const std::string  problem =
+        state_problem(parameters,
+                      fields,
+                      statistics,
+                      statistics_file.non_finite_column(statistics));
+      if (!problem.empty())
+        stop(statistics.step, problem, domain, false);
+    }
+    statistics_file.write(statistics);
+
+    if (time.is_output_step())
+      {
+        TimerOutput::Scope scope(timer, "output");
+        visualization.write(fields, flow, domain.fractions(), statistics.time);
+        last_output_step = statistics.step;
+      }
+
+    if (statistics.step == 0)
+      return;
+    const double per_step = statistics.wall_time / statistics.step;
+    const double left =
+      per_step * (time.end() - statistics.time) / statistics.tau;
+    pcout << "step " << std::setw(5) << statistics.step << "  t "
+          << std::setprecision(4) << std::setw(10) << statistics.time
+          << "  CFL " << std::setw(6) << statistics.cfl << "  its "
+          << std::setw(3) << statistics.linear_iterations << "  dV/V "
+          << std::setw(10) << statistics.volume_change << "  cells "
+          << std::setw(7) << statistics.cells << "  " << std::setprecision(3)
+          << per_step << " s/step  ~" << std::setprecision(3) << left
+          << " s left" << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::stop(const unsigned int       step,
+                       const std::string       &problem,
+                       const LiquidDomain<dim> &domain,
+                       const bool               state_is_good)
+  {
+    // Keep the state the run ended with for a look, if it can be shown.
+    const bool written = state_is_good && last_output_step == time.step();
+    if (!written && fields_are_finite(fields))
+      visualization.write(fields, flow, domain.fractions(), time.time());
+    std::string what = problem;
+    while (!what.empty() && what.back() == '.')
+      what.pop_back();
+    std::ostringstream message;
+    message << "step " << step << " (t = " << time.time() << "): " << what;
+    if (step > 0)
+      message << ". The statistics end with step " << step - 1;
+    if (!visualization.last_file().empty())
+      message << ", the visualization with " << parameters.output_directory
+              << "/" << visualization.last_file()
+              << (state_is_good ? " (the last good state)"
+                                : " (the last finite state)");
+    message << ".";
+    throw SolverError(message.str());
+  }
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace vefs

@@ -1,0 +1,190 @@
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+
+#include <vefs/fields/transported_fields.h>
+
+namespace vefs
+{
+  template <int dim>
+  TransportedFields<dim>::TransportedFields(
+    const parallel::distributed::Triangulation<dim> &triangulation,
+    const bool                                       with_stress,
+    const std::vector<unsigned int>                 &periodic_directions)
+    : n_components(with_stress ? max_components : dim + 1)
+    , fe(FE_Q<dim>(1), n_components)
+    , dof_handler(triangulation)
+    , periodic_directions(periodic_directions)
+  {
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::setup_dofs()
+  {
+    dof_handler.distribute_dofs(fe);
+    owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+    // Building a partitioner finds the owners of the ghosts by messages:
+    // once per mesh, not per vector.
+    partitioner = std::make_shared<Utilities::MPI::Partitioner>(
+      owned_dofs,
+      relevant_dofs,
+      dof_handler.get_triangulation().get_communicator());
+
+    constraints.clear();
+    constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    for (const unsigned int d : periodic_directions)
+      DoFTools::make_periodicity_constraints(dof_handler,
+                                             2 * d,
+                                             2 * d + 1,
+                                             d,
+                                             constraints);
+    constraints.close();
+
+    initialize_vector(fields);
+    initialize_vector(level_set_gradient);
+    localize_constraints();
+
+    // FE_Q(1)^n_components: the i-th degree of freedom of a vertex belongs to
+    // component i, so one vertex carries all fields of one node.
+    owned_nodes.clear();
+    std::vector<bool> seen(owned_dofs.n_elements(), false);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const auto first = cell->vertex_dof_index(v, 0);
+            if (!owned_dofs.is_element(first) ||
+                constraints.is_constrained(first))
+              continue;
+            const auto local = owned_dofs.index_within_set(first);
+            if (seen[local])
+              continue;
+            seen[local] = true;
+            Node node;
+            node.point = cell->vertex(v);
+            for (unsigned int c = 0; c < n_components; ++c)
+              node.dofs[c] = cell->vertex_dof_index(v, c);
+            owned_nodes.push_back(node);
+          }
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::initialize_vector(VectorType &vector) const
+  {
+    vector.reinit(partitioner);
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::interpolate(const Function<dim> &level_set,
+                                      const Function<dim> &velocity,
+                                      const Function<dim> *stress)
+  {
+    for (const auto &node : owned_nodes)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          fields(node.dofs[d]) = velocity.value(node.point, d);
+        fields(node.dofs[level_set_component]) = level_set.value(node.point);
+        // Central differences: the expression has no analytic gradient.
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double step = 1e-6;
+            Point<dim>   plus = node.point, minus = node.point;
+            plus[d] += step;
+            minus[d] -= step;
+            level_set_gradient(node.dofs[d]) =
+              (level_set.value(plus) - level_set.value(minus)) / (2 * step);
+          }
+        if (has_stress())
+          for (unsigned int i = 0; i < n_stress_components; ++i)
+            fields(node.dofs[first_stress_component + i]) =
+              stress ? stress->value(node.point, i) : 0.;
+      }
+    finalize();
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::set_velocity(const Function<dim> &velocity)
+  {
+    for (const auto &node : owned_nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        fields(node.dofs[d]) = velocity.value(node.point, d);
+    finalize();
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::finalize()
+  {
+    for (VectorType *vector : {&fields, &level_set_gradient})
+      {
+        vector->update_ghost_values();
+        distribute_constraints(*vector);
+        vector->update_ghost_values();
+      }
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::localize_constraints()
+  {
+    const auto &partitioner = *fields.get_partitioner();
+    constrained_entries.clear();
+    inhomogeneities.clear();
+    sources_start.assign(1, 0);
+    sources.clear();
+    bool local = true;
+    for (const auto &line : constraints.get_lines())
+      if (owned_dofs.is_element(line.index))
+        {
+          constrained_entries.push_back(
+            partitioner.global_to_local(line.index));
+          inhomogeneities.push_back(line.inhomogeneity);
+          for (const auto &[source, weight] : line.entries)
+            {
+              if (!partitioner.in_local_range(source) &&
+                  !partitioner.is_ghost_entry(source))
+                local = false;
+              else
+                sources.emplace_back(partitioner.global_to_local(source),
+                                     weight);
+            }
+          sources_start.push_back(sources.size());
+        }
+    constraints_are_local = !Utilities::MPI::logical_or(
+      !local,
+      dof_handler.get_triangulation().get_communicator());
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::distribute_constraints(VectorType &vector) const
+  {
+    if (!constraints_are_local)
+      {
+        constraints.distribute(vector);
+        return;
+      }
+    Assert(vector.get_partitioner()->locally_owned_size() ==
+               fields.get_partitioner()->locally_owned_size() &&
+             vector.get_partitioner()->n_ghost_indices() ==
+               fields.get_partitioner()->n_ghost_indices(),
+           ExcMessage("A vector with the layout of the fields."));
+    // Constraints are closed: no source is itself constrained, so the
+    // entries can be written in place, in the order deal.II sums them.
+    for (unsigned int k = 0; k < constrained_entries.size(); ++k)
+      {
+        double value = inhomogeneities[k];
+        for (unsigned int s = sources_start[k]; s < sources_start[k + 1]; ++s)
+          value += vector.local_element(sources[s].first) * sources[s].second;
+        vector.local_element(constrained_entries[k]) = value;
+      }
+  }
+
+  template class TransportedFields<2>;
+  template class TransportedFields<3>;
+} // namespace vefs

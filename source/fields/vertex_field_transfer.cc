@@ -1,0 +1,120 @@
+#include <vefs/fields/vertex_field_transfer.h>
+
+#include <algorithm>
+#include <cstring>
+
+namespace vefs
+{
+  template <int dim>
+  VertexFieldTransfer<dim>::VertexFieldTransfer(
+    parallel::distributed::Triangulation<dim> &mesh,
+    const TransportedFields<dim>              &fields,
+    const std::vector<Slot>                   &slots)
+    : mesh(mesh)
+    , slots(slots)
+    , child_weights(make_child_vertex_weights<dim>())
+  {
+    for (const Slot &slot : slots)
+      n_values += slot.components.size();
+    // Every cell packs the same number of bytes: deal.II's fixed-size
+    // transfer, cheaper than the variable one.
+    handle = mesh.register_data_attach(
+      [this, &fields](const typename Triangulation<dim>::cell_iterator &cell,
+                      const typename Triangulation<dim>::CellStatus status) {
+        return vertex_values(fields,
+                             cell,
+                             status == Triangulation<dim>::CELL_COARSEN);
+      },
+      false);
+  }
+
+  template <int dim>
+  std::vector<char>
+  VertexFieldTransfer<dim>::vertex_values(
+    const TransportedFields<dim>                     &fields,
+    const typename Triangulation<dim>::cell_iterator &cell,
+    const bool                                        from_children) const
+  {
+    std::vector<char> buffer(GeometryInfo<dim>::vertices_per_cell * n_values *
+                             sizeof(double));
+    char             *next = buffer.data();
+    for (const unsigned int v : GeometryInfo<dim>::vertex_indices())
+      {
+        // Vertex v of a parent is vertex v of its child v.
+        const auto dof_cell =
+          fields.cell_of(from_children ? cell->child(v) : cell);
+        for (const Slot &slot : slots)
+          for (const unsigned int c : slot.components)
+            {
+              const double value =
+                (*slot.vector)(dof_cell->vertex_dof_index(v, c));
+              std::memcpy(next, &value, sizeof(double));
+              next += sizeof(double);
+            }
+      }
+    return buffer;
+  }
+
+  template <int dim>
+  void
+  VertexFieldTransfer<dim>::write(
+    const TransportedFields<dim>                            &fields,
+    const typename Triangulation<dim>::active_cell_iterator &cell,
+    const double                                            *values,
+    const std::vector<VectorType *>                         &vectors) const
+  {
+    const auto dof_cell = fields.cell_of(cell);
+    for (const unsigned int v : cell->vertex_indices())
+      {
+        unsigned int k = v * n_values;
+        for (unsigned int s = 0; s < slots.size(); ++s)
+          for (const unsigned int c : slots[s].components)
+            {
+              const types::global_dof_index dof =
+                dof_cell->vertex_dof_index(v, c);
+              if (vectors[s]->in_local_range(dof))
+                (*vectors[s])(dof) = values[k];
+              ++k;
+            }
+      }
+  }
+
+  template <int dim>
+  void
+  VertexFieldTransfer<dim>::unpack(const TransportedFields<dim>    &fields,
+                                   const std::vector<VectorType *> &vectors)
+  {
+    AssertThrow(vectors.size() == slots.size(), ExcInternalError());
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    std::vector<double>    parent(n_vertices * n_values);
+    std::vector<double>    child(n_vertices * n_values);
+    mesh.notify_ready_to_unpack(
+      handle,
+      [&](
+        const typename Triangulation<dim>::cell_iterator               &cell,
+        const typename Triangulation<dim>::CellStatus                   status,
+        const boost::iterator_range<std::vector<char>::const_iterator> &data) {
+        AssertThrow(static_cast<std::size_t>(data.size()) ==
+                      parent.size() * sizeof(double),
+                    ExcInternalError());
+        std::memcpy(parent.data(), &*data.begin(), data.size());
+        if (status != Triangulation<dim>::CELL_REFINE)
+          {
+            write(fields, cell, parent.data(), vectors);
+            return;
+          }
+        for (unsigned int c = 0; c < cell->n_children(); ++c)
+          {
+            std::fill(child.begin(), child.end(), 0.);
+            for (unsigned int v = 0; v < n_vertices; ++v)
+              for (const auto &[w, weight] : child_weights[c][v])
+                for (unsigned int k = 0; k < n_values; ++k)
+                  child[v * n_values + k] += weight * parent[w * n_values + k];
+            write(fields, cell->child(c), child.data(), vectors);
+          }
+      });
+  }
+
+  template class VertexFieldTransfer<2>;
+  template class VertexFieldTransfer<3>;
+} // namespace vefs

@@ -1,0 +1,245 @@
+#include <vefs/flow/flow_velocity.h>
+#include <vefs/stress/stress.h>
+#include <vefs/transport/field_extension.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vefs
+{
+  template <int dim>
+  FlowVelocity<dim>::FlowVelocity(const Parameters    &parameters,
+                                  const Rheology<dim> &rheology,
+                                  StokesStep<dim>     &flow,
+                                  TimerOutput         &timer)
+    : parameters(parameters)
+    , rheology(rheology)
+    , flow(flow)
+    , timer(timer)
+  {
+  }
+
+  template <int dim>
+  std::string
+  FlowVelocity<dim>::description() const
+  {
+    switch (parameters.regime())
+      {
+        case Regime::newtonian:
+          return "Newtonian free-surface flow";
+        case Regime::oldroyd_b:
+          return "Oldroyd-B free-surface flow";
+        case Regime::elastic_solid:
+          return parameters.solvent_viscosity > 0
+                   ? "Kelvin-Voigt elastic solid (neo-Hookean + viscous)"
+                   : "neo-Hookean elastic solid";
+      }
+    return "";
+  }
+
+  template <int dim>
+  void
+  FlowVelocity<dim>::add_columns(StatisticsFile<dim> &statistics) const
+  {
+    if (rheology.has_stress())
+      {
+        statistics.add_column("max_velocity_gradient", [](const auto &s) {
+          return s.max_velocity_gradient;
+        });
+        if (parameters.stress_update == StressUpdate::exponential &&
+            parameters.max_strain_per_step > 0)
+          statistics.add_column("strain_limited_points", [](const auto &s) {
+            return s.strain_limited_points;
+          });
+      }
+    if (flow.has_contact_walls())
+      {
+        statistics.add_column("contact_force",
+                              [](const auto &s) { return s.contact_force; });
+        statistics.add_column(dim == 2 ? "contact_length" : "contact_area",
+                              [](const auto &s) { return s.contact_measure; });
+      }
+  }
+
+  template <int dim>
+  void
+  FlowVelocity<dim>::set_initial_velocity(TransportedFields<dim> &) const
+  {
+    // The flow starts from the scene's 'Initial liquid/Velocity'.
+  }
+
+  template <int dim>
+  void
+  FlowVelocity<dim>::start(const LiquidDomain<dim> &domain, const double time)
+  {
+    flow.setup(domain, time);
+  }
+
+  template <int dim>
+  TimeStep
+  FlowVelocity<dim>::time_step(const TimeControl         &time,
+                               const StepStatistics<dim> &last,
+                               const TransportedFields<dim> &) const
+  {
+    return time.flow_time_step(last.max_velocity, last.max_velocity_gradient);
+  }
+
+  template <int dim>
+  void
+  FlowVelocity<dim>::set_advection_velocity(TransportedFields<dim> &,
+                                            const TimeControl &) const
+  {
+    // The fields hold the flow's last velocity, extended beyond the liquid.
+  }
+
+  template <int dim>
+  void
+  FlowVelocity<dim>::advance(TransportedFields<dim>  &fields,
+                             const LiquidDomain<dim> &domain,
+                             const TimeControl       &time,
+                             StepStatistics<dim>     &statistics)
+  {
+    statistics.linear_iterations = 0;
+    {
+      TimerOutput::Scope scope(timer, "3 diffusion: setup");
+      flow.setup(domain, time.time() + time.tau());
+    }
+    {
+      TimerOutput::Scope scope(timer, "3 diffusion: assembly");
+      flow.assemble(fields, time.tau());
+    }
+    {
+      TimerOutput::Scope scope(timer, "3 diffusion: preconditioner");
+      flow.build_preconditioner();
+    }
+    statistics.linear_iterations = solve_with_contact(fields, time.tau());
+    update_fields(fields, domain, time.tau(), time.expected_cfl(), statistics);
+  }
+
+  template <int dim>
+  unsigned int
+  FlowVelocity<dim>::solve_with_contact(const TransportedFields<dim> &fields,
+                                        const double                  tau)
+  {
+    // Contact walls: solve again while the contact set changes
+    // (doc/method.md, "Walls"); a few times at the most. Until a solve
+    // leaves the set unchanged the solves only have to tell which nodes
+    // touch: loosely; the step ends with a full solve that leaves the set
+    // unchanged too.
+    unsigned int iterations = 0;
+    bool         full_solve =
+      !flow.touches_contact_walls() ||
+      parameters.contact_solver_tolerance <= parameters.solver_tolerance;
+    for (unsigned int solves = 1;; ++solves)
+      {
+        {
+          TimerOutput::Scope scope(timer, "3 diffusion: solve");
+          iterations +=
+            flow.solve(full_solve ? parameters.solver_tolerance
+                                  : parameters.contact_solver_tolerance);
+        }
+        if (full_solve && solves >= max_contact_iterations)
+          break;
+        bool changed;
+        {
+          TimerOutput::Scope scope(timer, "3 diffusion: contact set");
+          changed = flow.update_contact(fields, tau);
+        }
+        if (!changed && full_solve)
+          break;
+        if (!changed || solves + 1 >= max_contact_iterations)
+          full_solve = true;
+      }
+    return iterations;
+  }
+
+  template <int dim>
+  void
+  FlowVelocity<dim>::update_fields(TransportedFields<dim>  &fields,
+                                   const LiquidDomain<dim> &domain,
+                                   const double             tau,
+                                   const double             expected_cfl,
+                                   StepStatistics<dim>     &statistics)
+  {
+    // The next characteristics trace back through the band around the
+    // liquid: give it the new velocity, as far as the surface can move.
+    TimerOutput::Scope scope(timer, "velocity extension");
+    typename TransportedFields<dim>::VectorType known;
+    fields.initialize_vector(known);
+    // With 'Stress theta' < 1 the stress law sees theta u + (1 - theta) u*:
+    // keep u* before the new velocity replaces it.
+    const double theta = rheology.implicit_weight();
+    typename TransportedFields<dim>::VectorType blended_velocity;
+    if (rheology.has_stress() && theta < 1)
+      {
+        fields.initialize_vector(blended_velocity);
+        blended_velocity = fields.fields;
+      }
+    flow.copy_velocity_to(fields, known);
+    if (rheology.has_stress())
+      {
+        TimerOutput::Scope scope(timer, "4 stress update");
+        if (theta < 1)
+          {
+            blended_velocity.sadd(1 - theta, theta, fields.fields);
+            blended_velocity.update_ghost_values();
+          }
+        const StressUpdateReport report =
+          update_stress(fields,
+                        theta < 1 ? blended_velocity : fields.fields,
+                        domain,
+                        rheology,
+                        tau,
+                        parameters.extend_outside_stress);
+        statistics.max_velocity_gradient = report.max_velocity_gradient;
+        statistics.strain_limited_points = report.strain_limited_points;
+      }
+    const unsigned int layers =
+      std::max<unsigned int>(parameters.extension_layers,
+                             std::ceil(expected_cfl) + 2);
+    // The vertices of cut cells outside the liquid keep the flow step's
+    // velocity and the updated stress, or take the extension ('Outside
+    // velocity/stress of cut cells').
+    const bool extend_stress =
+      fields.has_stress() && parameters.extend_outside_stress;
+    if (parameters.extend_outside_velocity == extend_stress)
+      {
+        if (extend_stress)
+          unflag_nodes_outside_liquid(fields, known);
+        extend_flow_fields(fields, known, layers, flow_components(fields));
+      }
+    else
+      {
+        auto known_outside_too = known;
+        unflag_nodes_outside_liquid(fields, known);
+        extend_flow_fields(fields,
+                           extend_stress ? known_outside_too : known,
+                           layers,
+                           velocity_components<dim>());
+        if (fields.has_stress())
+          extend_flow_fields(fields,
+                             extend_stress ? known : known_outside_too,
+                             layers,
+                             stress_components(fields));
+      }
+  }
+
+  template <int dim>
+  double
+  FlowVelocity<dim>::outflow(const double tau) const
+  {
+    return tau * flow.outflow_rate();
+  }
+
+  template <int dim>
+  void
+  FlowVelocity<dim>::measure(StepStatistics<dim> &statistics) const
+  {
+    statistics.dofs            = flow.n_dofs();
+    statistics.contact_force   = flow.contact_force();
+    statistics.contact_measure = flow.contact_measure();
+  }
+
+  template class FlowVelocity<2>;
+  template class FlowVelocity<3>;
+} // namespace vefs

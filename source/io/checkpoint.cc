@@ -1,0 +1,418 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/solution_transfer.h>
+
+#include <vefs/base/parameters.h>
+#include <vefs/io/checkpoint.h>
+
+#include <algorithm>
+#include <cinttypes>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace vefs
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    /** First line of the state file; the number changes with its format. */
+    const std::string magic = "vefs checkpoint 2";
+
+    /** Exactly, as a C99 hexadecimal float. */
+    std::string
+    exact(const double value)
+    {
+      char text[64];
+      std::snprintf(text, sizeof(text), "%a", value);
+      return text;
+    }
+
+    /** FNV-1a of the file's bytes: catches a truncated or damaged file. */
+    std::uint64_t
+    checksum(const std::string &file)
+    {
+      std::ifstream     input(file, std::ios::binary);
+      std::uint64_t     hash = 14695981039346656037ull;
+      std::vector<char> buffer(1 << 20);
+      while (input)
+        {
+          input.read(buffer.data(), buffer.size());
+          const std::streamsize n = input.gcount();
+          for (std::streamsize i = 0; i < n; ++i)
+            {
+              hash ^= static_cast<unsigned char>(buffer[i]);
+              hash *= 1099511628211ull;
+            }
+        }
+      return hash;
+    }
+
+    /** "file NAME SIZE CHECKSUM" for each file but the state itself. */
+    std::string
+    file_lines(const std::string &directory)
+    {
+      std::vector<std::string> names;
+      for (const auto &file : fs::directory_iterator(directory))
+        if (file.is_regular_file() && file.path().filename() != "state")
+          names.push_back(file.path().filename().string());
+      std::sort(names.begin(), names.end());
+      std::ostringstream lines;
+      for (const auto &name : names)
+        {
+          const std::string path = directory + "/" + name;
+          char              sum[32];
+          std::snprintf(sum, sizeof(sum), "%016" PRIx64, checksum(path));
+          lines << "file " << name << ' ' << fs::file_size(path) << ' ' << sum
+                << '\n';
+        }
+      return lines.str();
+    }
+
+    /** The key-value lines of a state file. */
+    using Entries = std::multimap<std::string, std::vector<std::string>>;
+
+    Entries
+    parse_entries(const std::string &text)
+    {
+      Entries            entries;
+      std::istringstream input(text);
+      std::string        line;
+      std::getline(input, line);
+      if (line != magic)
+        throw std::runtime_error("'state' does not start with '" + magic + "'");
+      bool complete = false;
+      while (std::getline(input, line))
+        {
+          std::istringstream       words(line);
+          std::string              key, word;
+          std::vector<std::string> values;
+          words >> key;
+          while (words >> word)
+            values.push_back(word);
+          if (key == "end")
+            complete = true;
+          else if (!key.empty())
+            entries.emplace(key, values);
+        }
+      if (!complete)
+        throw std::runtime_error("'state' is incomplete");
+      return entries;
+    }
+
+    const std::vector<std::string> &
+    entry(const Entries &entries, const std::string &key)
+    {
+      const auto found = entries.find(key);
+      if (found == entries.end() || found->second.empty())
+        throw std::runtime_error("'state' has no value of '" + key + "'");
+      return found->second;
+    }
+
+    double
+    to_double(const std::string &text)
+    {
+      char        *end   = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0')
+        throw std::runtime_error("'state' has the malformed number '" + text +
+                                 "'");
+      return value;
+    }
+
+    unsigned long long
+    to_unsigned(const std::string &text)
+    {
+      if (text.empty() ||
+          text.find_first_not_of("0123456789") != std::string::npos)
+        throw std::runtime_error("'state' has the malformed count '" + text +
+                                 "'");
+      return std::stoull(text);
+    }
+
+    /** Rank 0: the state text, after checking every file it lists. */
+    std::string
+    read_and_verify(const std::string &directory)
+    {
+      std::ifstream input(directory + "/state", std::ios::binary);
+      if (!input)
+        throw std::runtime_error("'state' is missing");
+      std::ostringstream text;
+      text << input.rdbuf();
+      const Entries entries = parse_entries(text.str());
+      if (entries.count("file") == 0)
+        throw std::runtime_error("'state' lists no files");
+      for (auto [it, end] = entries.equal_range("file"); it != end; ++it)
+        {
+          const auto &values = it->second;
+          if (values.size() != 3)
+            throw std::runtime_error("'state' has a malformed file line");
+          const std::string path = directory + "/" + values[0];
+          std::error_code   error;
+          const auto        size = fs::file_size(path, error);
+          if (error)
+            throw std::runtime_error("'" + values[0] + "' is missing");
+          char sum[32];
+          std::snprintf(sum, sizeof(sum), "%016" PRIx64, checksum(path));
+          if (size != to_unsigned(values[1]) || values[2] != sum)
+            throw std::runtime_error("'" + values[0] +
+                                     "' is damaged (its size or checksum "
+                                     "differs from the one recorded)");
+        }
+      return text.str();
+    }
+  } // namespace
+
+  std::string
+  find_checkpoint(const std::string &output_directory)
+  {
+    for (const std::string name :
+         {CheckpointNames::current, CheckpointNames::previous})
+      if (fs::exists(output_directory + "/" + name + "/state"))
+        return output_directory + "/" + name;
+    throw InputError("option --resume: no checkpoint in '" + output_directory +
+                     "' (expected '" + output_directory + "/" +
+                     CheckpointNames::current +
+                     "/'; it is written at the steps set by 'Checkpoint/"
+                     "Interval steps' and 'Interval minutes', and on SIGTERM "
+                     "or SIGINT)");
+  }
+
+  template <int dim>
+  std::string
+  write_checkpoint(const std::string            &output_directory,
+                   const std::string            &parameters_text,
+                   const TransportedFields<dim> &fields,
+                   const LevelSetHistory<dim>   &history,
+                   const RunState<dim>          &state)
+  {
+    const auto &triangulation =
+      dynamic_cast<const parallel::distributed::Triangulation<dim> &>(
+        fields.dof_handler.get_triangulation());
+    const MPI_Comm    comm = triangulation.get_communicator();
+    const bool        root = Utilities::MPI::this_mpi_process(comm) == 0;
+    const std::string next = output_directory + "/" + CheckpointNames::next;
+    std::string       problem;
+    if (root)
+      {
+        std::error_code error;
+        fs::remove_all(next, error);
+        if (!error)
+          fs::create_directories(next, error);
+        if (error)
+          problem = "cannot create '" + next + "': " + error.message();
+      }
+    problem = Utilities::MPI::broadcast(comm, problem, 0);
+    if (!problem.empty())
+      return problem;
+
+    {
+      parallel::distributed::
+        SolutionTransfer<dim, typename TransportedFields<dim>::VectorType>
+          transfer(fields.dof_handler);
+      // The level set gradient as well: the gradient augmented transport
+      // carries it (format 1 did not save it, and resumed such runs
+      // differently).
+      // And the steps since the last remap of the level set.
+      std::vector<const typename TransportedFields<dim>::VectorType *> vectors{
+        &fields.fields,
+        &fields.level_set_gradient};
+      for (const auto *vector : history.vectors())
+        vectors.push_back(vector);
+      transfer.prepare_for_serialization(vectors);
+      triangulation.save(next + "/mesh");
+    }
+    // The files of every rank are complete before rank 0 lists them.
+    MPI_Barrier(comm);
+
+    if (root)
+      try
+        {
+          {
+            std::ofstream file(next + "/parameters.prm");
+            file << parameters_text;
+            file.close();
+            if (!file)
+              throw std::runtime_error("cannot write '" + next +
+                                       "/parameters.prm'");
+          }
+          const auto        &s = state.statistics;
+          std::ostringstream text;
+          text << magic << '\n'
+               << "dimension " << dim << '\n'
+               << "components " << fields.n_components << '\n'
+               << "ranks " << Utilities::MPI::n_mpi_processes(comm) << '\n'
+               << "step " << s.step << '\n'
+               << "time " << exact(s.time) << '\n'
+               << "tau " << exact(s.tau) << '\n'
+               << "cfl " << exact(s.cfl) << '\n'
+               << "max_velocity " << exact(s.max_velocity) << '\n'
+               << "max_velocity_gradient " << exact(s.max_velocity_gradient)
+               << '\n'
+               << "linear_iterations " << s.linear_iterations << '\n'
+               << "wall_time " << exact(s.wall_time) << '\n'
+               << "initial_volume " << exact(state.initial_volume) << '\n'
+               << "expected_volume " << exact(state.expected_volume) << '\n'
+               << "last_output_step "
+               << (state.last_output_step == numbers::invalid_unsigned_int
+                     ? std::string("none")
+                     : std::to_string(state.last_output_step))
+               << '\n';
+          for (const auto &[time, name] : state.visualization_series)
+            text << "output " << exact(time) << ' ' << name << '\n';
+          const auto remap = history.scalars();
+          text << "level_set_history " << remap.has_base << ' '
+               << exact(remap.moved);
+          for (const double tau : remap.taus)
+            text << ' ' << exact(tau);
+          text << '\n';
+          text << file_lines(next) << "end\n";
+          {
+            std::ofstream file(next + "/state", std::ios::binary);
+            file << text.str();
+            file.close();
+            if (!file)
+              throw std::runtime_error("cannot write '" + next + "/state'");
+          }
+          // Two renames: between them checkpoint.old is the complete one.
+          const std::string current =
+            output_directory + "/" + CheckpointNames::current;
+          const std::string previous =
+            output_directory + "/" + CheckpointNames::previous;
+          fs::remove_all(previous);
+          if (fs::exists(current))
+            fs::rename(current, previous);
+          fs::rename(next, current);
+          fs::remove_all(previous);
+        }
+      catch (const std::exception &error)
+        {
+          problem = error.what();
+        }
+    return Utilities::MPI::broadcast(comm, problem, 0);
+  }
+
+  template <int dim>
+  RunState<dim>
+  read_checkpoint(const std::string                         &directory,
+                  parallel::distributed::Triangulation<dim> &triangulation,
+                  TransportedFields<dim>                    &fields,
+                  LevelSetHistory<dim>                      &history)
+  {
+    const MPI_Comm comm = triangulation.get_communicator();
+    std::string    problem, text;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      try
+        {
+          text = read_and_verify(directory);
+        }
+      catch (const std::exception &error)
+        {
+          problem = error.what();
+        }
+    problem = Utilities::MPI::broadcast(comm, problem, 0);
+    text    = Utilities::MPI::broadcast(comm, text, 0);
+
+    RunState<dim>                          state;
+    typename LevelSetHistory<dim>::Scalars remap;
+    try
+      {
+        if (!problem.empty())
+          throw std::runtime_error(problem);
+        const Entries entries = parse_entries(text);
+        const auto    value   = [&](const std::string &key) {
+          return entry(entries, key)[0];
+        };
+        if (to_unsigned(value("dimension")) != dim ||
+            to_unsigned(value("components")) != fields.n_components)
+          throw std::runtime_error("it holds other fields than this scene");
+        auto &s                 = state.statistics;
+        s.step                  = to_unsigned(value("step"));
+        s.time                  = to_double(value("time"));
+        s.tau                   = to_double(value("tau"));
+        s.cfl                   = to_double(value("cfl"));
+        s.max_velocity          = to_double(value("max_velocity"));
+        s.max_velocity_gradient = to_double(value("max_velocity_gradient"));
+        s.linear_iterations     = to_unsigned(value("linear_iterations"));
+        s.wall_time             = to_double(value("wall_time"));
+        state.initial_volume    = to_double(value("initial_volume"));
+        state.expected_volume   = to_double(value("expected_volume"));
+        state.last_output_step  = value("last_output_step") == "none"
+                                    ? numbers::invalid_unsigned_int
+                                    : to_unsigned(value("last_output_step"));
+        // Checkpoints written before the remap distance have no such line.
+        if (const auto found = entries.find("level_set_history");
+            found != entries.end())
+          {
+            const auto &values = found->second;
+            if (values.size() < 2)
+              throw std::runtime_error(
+                "'state' has a malformed level_set_history line");
+            remap.has_base = to_unsigned(values[0]) != 0;
+            remap.moved    = to_double(values[1]);
+            for (unsigned int i = 2; i < values.size(); ++i)
+              remap.taus.push_back(to_double(values[i]));
+          }
+        for (auto [it, end] = entries.equal_range("output"); it != end; ++it)
+          {
+            if (it->second.size() != 2)
+              throw std::runtime_error("'state' has a malformed output line");
+            state.visualization_series.emplace_back(to_double(it->second[0]),
+                                                    it->second[1]);
+          }
+      }
+    catch (const std::exception &error)
+      {
+        throw CheckpointError("option --resume: the checkpoint '" + directory +
+                              "' is unusable: " + error.what());
+      }
+
+    // The files passed their checksums: p4est reads a sound forest.
+    triangulation.load(directory + "/mesh");
+    fields.setup_dofs();
+    std::vector<typename TransportedFields<dim>::VectorType>   loaded(2);
+    std::vector<typename TransportedFields<dim>::VectorType *> targets;
+    for (auto &vector : loaded)
+      {
+        fields.initialize_vector(vector);
+        vector.zero_out_ghost_values();
+        targets.push_back(&vector);
+      }
+    for (auto *vector : history.restore(remap, fields))
+      targets.push_back(vector);
+    parallel::distributed::
+      SolutionTransfer<dim, typename TransportedFields<dim>::VectorType>
+        transfer(fields.dof_handler);
+    transfer.deserialize(targets);
+    fields.fields             = loaded[0];
+    fields.level_set_gradient = loaded[1];
+    fields.finalize();
+    history.restored();
+    return state;
+  }
+
+  template std::string
+  write_checkpoint<2>(const std::string &,
+                      const std::string &,
+                      const TransportedFields<2> &,
+                      const LevelSetHistory<2> &,
+                      const RunState<2> &);
+  template std::string
+  write_checkpoint<3>(const std::string &,
+                      const std::string &,
+                      const TransportedFields<3> &,
+                      const LevelSetHistory<3> &,
+                      const RunState<3> &);
+  template RunState<2>
+  read_checkpoint<2>(const std::string &,
+                     parallel::distributed::Triangulation<2> &,
+                     TransportedFields<2> &,
+                     LevelSetHistory<2> &);
+  template RunState<3>
+  read_checkpoint<3>(const std::string &,
+                     parallel::distributed::Triangulation<3> &,
+                     TransportedFields<3> &,
+                     LevelSetHistory<3> &);
+} // namespace vefs

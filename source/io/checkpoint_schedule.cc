@@ -1,0 +1,79 @@
+#include <deal.II/base/mpi.h>
+
+#include <vefs/base/stop_signal.h>
+#include <vefs/io/checkpoint.h>
+#include <vefs/io/checkpoint_schedule.h>
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace vefs
+{
+  CheckpointSchedule::CheckpointSchedule(const Parameters         &parameters,
+                                         const MPI_Comm            comm,
+                                         const ConditionalOStream &pcout)
+    : parameters(parameters)
+    , comm(comm)
+    , pcout(pcout)
+  {
+  }
+
+  std::optional<RunEnd>
+  CheckpointSchedule::after_step(const unsigned int                  step,
+                                 const double                        time,
+                                 const unsigned int                  steps_done,
+                                 const std::function<std::string()> &write)
+  {
+    // Every rank takes the same decision.
+    const int  signal       = Utilities::MPI::max(received_stop_signal(), comm);
+    const bool planned_stop = parameters.stop_after_steps > 0 &&
+                              steps_done >= parameters.stop_after_steps;
+    const bool by_steps = parameters.checkpoint_interval_steps > 0 &&
+                          step % parameters.checkpoint_interval_steps == 0;
+    const bool by_time =
+      Utilities::MPI::logical_or(parameters.checkpoint_interval_minutes > 0 &&
+                                   since_checkpoint.wall_time() >=
+                                     60 *
+                                       parameters.checkpoint_interval_minutes,
+                                 comm);
+    if (signal == 0 && !planned_stop && !by_steps && !by_time)
+      return {};
+
+    Timer             writing;
+    const std::string problem = write();
+    if (problem.empty())
+      pcout << "checkpoint of step " << step << " written in "
+            << std::setprecision(3) << writing.wall_time() << " s" << std::endl;
+    since_checkpoint.restart();
+    const std::string directory =
+      parameters.output_directory + "/" + CheckpointNames::current;
+    std::ostringstream where;
+    where << "step " << step << " (t = " << time << ")";
+    if (!problem.empty())
+      {
+        const std::string failure =
+          "the checkpoint of " + where.str() + " was not written: " + problem;
+        if (signal != 0 || planned_stop)
+          throw SolverError(failure + "; the statistics end with step " +
+                            std::to_string(step));
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          std::cerr << "vefs: warning: " << failure << std::endl;
+        return {};
+      }
+    const std::string resume_hint = "; the checkpoint is in " + directory +
+                                    "/, continue with: vefs --resume " +
+                                    parameters.output_directory;
+    if (signal != 0)
+      return RunEnd{128 + signal,
+                    std::string("stopped by ") + signal_name(signal) +
+                      " after " + where.str() + resume_hint};
+    if (planned_stop)
+      return RunEnd{0,
+                    "stopped after " + where.str() + ", " +
+                      std::to_string(steps_done) +
+                      " steps as set by 'Checkpoint/Stop after steps'" +
+                      resume_hint};
+    return {};
+  }
+} // namespace vefs

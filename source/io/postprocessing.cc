@@ -1,0 +1,185 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <vefs/io/postprocessing.h>
+#include <vefs/transport/free_surface.h>
+
+#include <cmath>
+#include <limits>
+
+namespace vefs
+{
+  namespace
+  {
+    /**
+     * Widen the box [lower, upper] to the liquid of @p cell: all vertices of
+     * a full cell; of a cut one, its liquid vertices and the quadrature
+     * points of its piece of surface (the box is then short of the surface's
+     * extreme by a fraction of the piece, well below a cell).
+     */
+    template <int dim, typename CellIterator>
+    void
+    widen_to_liquid(const CellIterator           &cell,
+                    const TransportedFields<dim> &fields,
+                    const LiquidDomain<dim>      &domain,
+                    Point<dim>                   &lower,
+                    Point<dim>                   &upper)
+    {
+      const auto include = [&](const Point<dim> &p) {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower[d] = std::min(lower[d], p[d]);
+            upper[d] = std::max(upper[d], p[d]);
+          }
+      };
+      const bool is_cut =
+        domain.location(cell) == LiquidDomain<dim>::Location::cut;
+      for (const unsigned int v : cell->vertex_indices())
+        if (!is_cut || fields.fields(cell->vertex_dof_index(
+                         v,
+                         TransportedFields<dim>::level_set_component)) <= 0)
+          include(cell->vertex(v));
+      if (is_cut)
+        {
+          // The cells are boxes: the reference cell maps by a diagonal
+          // scaling.
+          const Point<dim> origin   = cell->vertex(0);
+          const Point<dim> diagonal = cell->vertex(cell->n_vertices() - 1);
+          for (const Point<dim> &xi :
+               domain.cut_cell(cell).surface.get_points())
+            {
+              Point<dim> p = origin;
+              for (unsigned int d = 0; d < dim; ++d)
+                p[d] += xi[d] * (diagonal[d] - origin[d]);
+              include(p);
+            }
+        }
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  measure_step(const Parameters             &parameters,
+               const TransportedFields<dim> &fields,
+               const LiquidDomain<dim>      &domain,
+               const double                  initial_volume,
+               const double                  expected_volume,
+               StepStatistics<dim>          &s)
+  {
+    const MPI_Comm comm =
+      fields.dof_handler.get_triangulation().get_communicator();
+    Tensor<1, dim> gravity;
+    for (unsigned int d = 0; d < dim; ++d)
+      gravity[d] = parameters.gravity[d];
+
+    // Volume, centroid and energies over the liquid as the flow step sees it.
+    LiquidValues<dim> liquid_values(domain);
+    std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
+
+    double         kinetic = 0, potential = 0, volume = 0, max_speed = 0;
+    Tensor<1, dim> first_moment, momentum;
+    unsigned int   liquid_cells = 0;
+    Point<dim>     lower, upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] = std::numeric_limits<double>::max();
+        upper[d] = -std::numeric_limits<double>::max();
+      }
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && domain.has_liquid(cell))
+        {
+          ++liquid_cells;
+          widen_to_liquid(cell, fields, domain, lower, upper);
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                vertex_u[v][d] = fields.fields(cell->vertex_dof_index(v, d));
+              max_speed = std::max(max_speed, vertex_u[v].norm());
+            }
+          const BoxCellValues<dim> &values = liquid_values.reinit(cell);
+          for (unsigned int q = 0; q < values.size(); ++q)
+            {
+              const Tensor<1, dim> u = values.value(vertex_u, q);
+              volume += values.JxW[q];
+              first_moment += values.JxW[q] * values.point[q];
+              momentum += values.JxW[q] * u;
+              kinetic +=
+                0.5 * parameters.density * u.norm_square() * values.JxW[q];
+              potential -=
+                parameters.density * gravity * values.point[q] * values.JxW[q];
+            }
+        }
+    s.kinetic_energy    = Utilities::MPI::sum(kinetic, comm);
+    s.potential_energy  = Utilities::MPI::sum(potential, comm);
+    s.elastic_energy    = 0;
+    s.volume            = Utilities::MPI::sum(volume, comm);
+    s.volume_change     = (s.volume - expected_volume) / initial_volume;
+    s.centroid          = Utilities::MPI::sum(first_moment, comm) / s.volume;
+    s.centroid_velocity = Utilities::MPI::sum(momentum, comm) / s.volume;
+    s.liquid_cells      = Utilities::MPI::sum(liquid_cells, comm);
+    s.max_velocity      = Utilities::MPI::max(max_speed, comm);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        s.liquid_lower[d] = Utilities::MPI::min(lower[d], comm);
+        s.liquid_upper[d] = Utilities::MPI::max(upper[d], comm);
+      }
+
+    const unsigned int vertical = dim - 1;
+    s.floor_extent              = liquid_extent_on_wall(fields,
+                                           2 * vertical,
+                                           0,
+                                           parameters.cavity_lower[0]);
+    s.wall_height               = liquid_extent_on_wall(fields,
+                                          0,
+                                          vertical,
+                                          parameters.cavity_lower[vertical]);
+    s.cells = fields.dof_handler.get_triangulation().n_global_active_cells();
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  probe_velocity(const TransportedFields<dim> &fields,
+                 const BoxMeshLocator<dim>    &locator,
+                 const Point<dim>             &point)
+  {
+    // Exactly one rank owns the cell the locator finds.
+    Tensor<1, dim> u;
+    const auto     cell = locator.locate(point);
+    if (cell->is_locally_owned())
+      {
+        const Point<dim> xi = BoxMeshLocator<dim>::unit_point(cell, point);
+        const auto       dof_cell = fields.cell_of(cell);
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
+            for (unsigned int d = 0; d < dim; ++d)
+              u[d] += weight * fields.fields(dof_cell->vertex_dof_index(v, d));
+          }
+      }
+    return Utilities::MPI::sum(
+      u,
+      fields.dof_handler.get_triangulation().get_communicator());
+  }
+
+  template void
+  measure_step<2>(const Parameters &,
+                  const TransportedFields<2> &,
+                  const LiquidDomain<2> &,
+                  const double,
+                  const double,
+                  StepStatistics<2> &);
+  template void
+  measure_step<3>(const Parameters &,
+                  const TransportedFields<3> &,
+                  const LiquidDomain<3> &,
+                  const double,
+                  const double,
+                  StepStatistics<3> &);
+  template Tensor<1, 2>
+  probe_velocity<2>(const TransportedFields<2> &,
+                    const BoxMeshLocator<2> &,
+                    const Point<2> &);
+  template Tensor<1, 3>
+  probe_velocity<3>(const TransportedFields<3> &,
+                    const BoxMeshLocator<3> &,
+                    const Point<3> &);
+} // namespace vefs

@@ -1,0 +1,158 @@
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <vefs/io/visualization.h>
+
+#include <fstream>
+
+namespace vefs
+{
+  namespace
+  {
+    /** phi = H(-psi) at the output points: the liquid indicator. */
+    template <int dim>
+    class LiquidIndicator : public DataPostprocessorScalar<dim>
+    {
+    public:
+      LiquidIndicator()
+        : DataPostprocessorScalar<dim>("phi", update_values)
+      {
+      }
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>> &computed_quantities) const override
+      {
+        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
+          computed_quantities[q](0) =
+            inputs.solution_values
+                  [q][TransportedFields<dim>::level_set_component] < 0
+              ? 1.
+              : 0.;
+      }
+    };
+
+    /** sigma_xx - sigma_yy: the first normal stress difference. */
+    template <int dim>
+    class FirstNormalStressDifference : public DataPostprocessorScalar<dim>
+    {
+    public:
+      FirstNormalStressDifference()
+        : DataPostprocessorScalar<dim>("first_normal_stress_difference",
+                                       update_values)
+      {
+      }
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>> &computed_quantities) const override
+      {
+        // Unrolled order: xx, yy, ...
+        constexpr unsigned int first =
+          TransportedFields<dim>::first_stress_component;
+        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
+          computed_quantities[q](0) = inputs.solution_values[q][first] -
+                                      inputs.solution_values[q][first + 1];
+      }
+    };
+
+    /** Names of the stress components, in unrolled order. */
+    template <int dim>
+    std::vector<std::string>
+    stress_names()
+    {
+      if (dim == 2)
+        return {"sigma_xx", "sigma_yy", "sigma_xy"};
+      return {"sigma_xx",
+              "sigma_yy",
+              "sigma_zz",
+              "sigma_xy",
+              "sigma_xz",
+              "sigma_yz"};
+    }
+  } // namespace
+
+  template <int dim>
+  Visualization<dim>::Visualization(const std::string &directory)
+    : directory(directory)
+  {
+  }
+
+  template <int dim>
+  void
+  Visualization<dim>::write(const TransportedFields<dim> &fields,
+                            const StokesStep<dim>        &flow,
+                            const Vector<float>          &liquid_fraction,
+                            const double                  time)
+  {
+    const auto    &triangulation = fields.dof_handler.get_triangulation();
+    const MPI_Comm comm          = triangulation.get_communicator();
+
+    DataOut<dim> data_out;
+    data_out.attach_triangulation(triangulation);
+
+    std::vector<std::string> names(dim, "extended_velocity");
+    names.push_back("level_set");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      field_interpretation = interpretation;
+    if (fields.has_stress())
+      for (const auto &name : stress_names<dim>())
+        {
+          names.push_back(name);
+          field_interpretation.push_back(
+            DataComponentInterpretation::component_is_scalar);
+        }
+    data_out.add_data_vector(fields.dof_handler,
+                             fields.fields,
+                             names,
+                             field_interpretation);
+
+    const LiquidIndicator<dim> phi;
+    data_out.add_data_vector(fields.dof_handler, fields.fields, phi);
+    const FirstNormalStressDifference<dim> first_normal_stress_difference;
+    if (fields.has_stress())
+      data_out.add_data_vector(fields.dof_handler,
+                               fields.fields,
+                               first_normal_stress_difference);
+
+    if (flow.n_dofs() > 0)
+      {
+        std::vector<std::string> flow_names(dim, "velocity");
+        flow_names.push_back("pressure");
+        data_out.add_data_vector(flow.get_dof_handler(),
+                                 flow.get_solution(),
+                                 flow_names,
+                                 interpretation);
+      }
+
+    Vector<float> rank(triangulation.n_active_cells());
+    rank = Utilities::MPI::this_mpi_process(comm);
+    data_out.add_data_vector(liquid_fraction, "liquid_fraction");
+    data_out.add_data_vector(rank, "mpi_rank");
+    data_out.build_patches();
+
+    const unsigned int counter = series.size();
+    const std::string  name =
+      data_out.write_vtu_with_pvtu_record(directory + "/",
+                                          "solution",
+                                          counter,
+                                          comm,
+                                          5);
+    series.emplace_back(time, name);
+
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ofstream pvd(directory + "/solution.pvd");
+        DataOutBase::write_pvd_record(pvd, series);
+      }
+  }
+
+  template class Visualization<2>;
+  template class Visualization<3>;
+} // namespace vefs

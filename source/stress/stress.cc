@@ -1,0 +1,371 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <vefs/stress/stress.h>
+#include <vefs/transport/free_surface.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vefs
+{
+  namespace
+  {
+    /**
+     * Smallest eigenvalue of a symmetric tensor, real even when the tensor
+     * is close to a multiple of the identity (the closed form of
+     * eigenvalues() then takes the root of a slightly negative number).
+     */
+    double
+    smallest_eigenvalue(const SymmetricTensor<2, 2> &c)
+    {
+      const double mean = 0.5 * (c[0][0] + c[1][1]);
+      const double half = 0.5 * (c[0][0] - c[1][1]);
+      return mean - std::sqrt(half * half + c[0][1] * c[0][1]);
+    }
+
+    double
+    smallest_eigenvalue(const SymmetricTensor<2, 3> &c)
+    {
+      // A blown-up stress (infinite, or so large that the rotations do not
+      // converge) has no smallest eigenvalue: NaN, which the health check
+      // reports, instead of deal.II's exception out of the postprocessing.
+      if (!std::isfinite(c.norm()))
+        return std::numeric_limits<double>::quiet_NaN();
+      try
+        {
+          // Jacobi rotations: robust for clustered eigenvalues; sorted in
+          // descending order.
+          return eigenvectors(c, SymmetricTensorEigenvectorMethod::jacobi)[2]
+            .first;
+        }
+      catch (const ExceptionBase &)
+        {
+          return std::numeric_limits<double>::quiet_NaN();
+        }
+    }
+
+    /**
+     * A lower bound of the eigenvalues of @p c (Gershgorin's circles): the
+     * smallest diagonal entry less the other entries of its row, in
+     * magnitude. NaN if @p c is not finite.
+     */
+    template <int dim>
+    double
+    gershgorin_lower_bound(const SymmetricTensor<2, dim> &c)
+    {
+      if (!std::isfinite(c.norm()))
+        return std::numeric_limits<double>::quiet_NaN();
+      double bound = std::numeric_limits<double>::max();
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          double row = c[i][i];
+          for (unsigned int j = 0; j < dim; ++j)
+            if (j != i)
+              row -= std::abs(c[i][j]);
+          bound = std::min(bound, row);
+        }
+      return bound;
+    }
+
+    /**
+     * How much more stretch (tr B - d) a node outside the liquid may carry
+     * than the liquid nodes of its cells. Any finite factor ends the
+     * runaway; the outside nodes of the thin sheets of the soft ball
+     * (prm/bouncing_ball_2d_wide.prm) carry up to a few times the stretch
+     * of the liquid nodes: a factor of 1 spreads that ball to 1.38 m
+     * instead of 1.01 m, 3 to 1.20 m, 10 leaves it as without the bound
+     * (doc/bouncing_ball.md).
+     */
+    constexpr double stretch_bound_factor = 10;
+
+    /**
+     * The nodes outside the liquid (psi > 0) of cells with liquid may not
+     * be stretched far more than the liquid: where tr B - d at such a node
+     * exceeds stretch_bound_factor times the largest tr B - d at the liquid
+     * nodes (psi <= 0) of its liquid cells, B becomes I + s (B - I),
+     * 0 <= s < 1, with that trace (a convex combination of I and B:
+     * positive definite). Nothing in the flow step
+     * resists the stretching of these nodes: their velocity is set by the
+     * ghost penalty and a sliver of liquid, and their stress enters the
+     * liquid only through the Q1 interpolation. Unbounded, it grows by the
+     * strain bound in every step while the step shrinks (the beam held by
+     * a no-slip wall, doc/bouncing_ball.md). @p updated is nonzero at the
+     * nodes the update has just set.
+     */
+    template <int dim>
+    void
+    bound_stress_outside_liquid(
+      TransportedFields<dim>                            &fields,
+      const LiquidDomain<dim>                           &domain,
+      const Rheology<dim>                               &rheology,
+      const typename TransportedFields<dim>::VectorType &updated)
+    {
+      constexpr unsigned int first =
+        TransportedFields<dim>::first_stress_component;
+      constexpr unsigned int n_stress =
+        TransportedFields<dim>::n_stress_components;
+      constexpr unsigned int level_set =
+        TransportedFields<dim>::level_set_component;
+      const auto conformation_trace = [&](const auto &dofs_of) {
+        SymmetricTensor<2, dim> sigma;
+        for (unsigned int i = 0; i < n_stress; ++i)
+          sigma.access_raw_entry(i) = fields.fields(dofs_of(first + i));
+        return trace(rheology.conformation(sigma));
+      };
+
+      typename TransportedFields<dim>::VectorType largest;
+      fields.initialize_vector(largest);
+      for (const auto &cell : fields.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && domain.has_liquid(cell))
+          {
+            double in_liquid = 0;
+            for (const unsigned int v : cell->vertex_indices())
+              if (fields.fields(cell->vertex_dof_index(v, level_set)) <= 0)
+                in_liquid =
+                  std::max(in_liquid,
+                           conformation_trace([&](const unsigned int c) {
+                             return cell->vertex_dof_index(v, c);
+                           }));
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                double &entry = largest(cell->vertex_dof_index(v, 0));
+                entry         = std::max(entry, in_liquid);
+              }
+          }
+      largest.compress(VectorOperation::max);
+
+      for (const auto &node : fields.nodes())
+        if (updated(node.dofs[0]) > 0 &&
+            fields.fields(node.dofs[level_set]) > 0 &&
+            largest(node.dofs[0]) > 0)
+          {
+            const double now = conformation_trace(
+              [&](const unsigned int c) { return node.dofs[c]; });
+            const double bound =
+              dim + stretch_bound_factor *
+                      std::max<double>(largest(node.dofs[0]) - dim, 0.);
+            if (now > bound)
+              {
+                const double s = (bound - dim) / (now - dim);
+                for (unsigned int i = 0; i < n_stress; ++i)
+                  fields.fields(node.dofs[first + i]) *= s;
+              }
+          }
+      fields.finalize();
+    }
+
+    /**
+     * The traceless part L - (tr L / d) I of the velocity gradient. The
+     * liquid is incompressible, but the discrete velocity is not exactly
+     * divergence free (stabilized equal-order elements, cut cells), and a
+     * divergence that keeps its sign at one place, as at the corner of a
+     * no-slip wall and the free surface, inflates c there by
+     * exp(2 tau div u) every step: an isotropic stress, and elastic energy
+     * from nowhere (2D beam: 4.5 -> 85 J/m while it lay at rest). Without
+     * the trace the exponential update keeps det c exactly.
+     */
+    template <int dim>
+    Tensor<2, dim>
+    traceless(const Tensor<2, dim> &L)
+    {
+      return L - (trace(L) / dim) * unit_symmetric_tensor<dim>();
+    }
+  } // namespace
+
+  template <int dim>
+  StressUpdateReport
+  update_stress(TransportedFields<dim>                            &fields,
+                const typename TransportedFields<dim>::VectorType &velocity,
+                const LiquidDomain<dim>                           &domain,
+                const Rheology<dim>                               &rheology,
+                const double                                       tau,
+                const bool outside_extended)
+  {
+    using VectorType = typename TransportedFields<dim>::VectorType;
+    constexpr unsigned int first =
+      TransportedFields<dim>::first_stress_component;
+    constexpr unsigned int n_stress =
+      TransportedFields<dim>::n_stress_components;
+
+    // Sum over the liquid cells around each node of volume * new stress;
+    // the volume itself goes into the node's first component.
+    VectorType sum;
+    fields.initialize_vector(sum);
+    // Quadrature points at the vertices, in the vertex order of the cell.
+    FEValues<dim>                    vertex_values(fields.mapping,
+                                fields.fe,
+                                QTrapezoid<dim>(),
+                                update_gradients);
+    const FEValuesExtractors::Vector velocity_extractor(0);
+    std::vector<Tensor<2, dim>> grad_u(GeometryInfo<dim>::vertices_per_cell);
+    LiquidValues<dim>           liquid_values(domain);
+    std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
+    StressUpdateReport                                               report;
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && domain.has_liquid(cell))
+        {
+          if (domain.location(cell) == LiquidDomain<dim>::Location::cut)
+            {
+              // A cut cell carries the stress at all its vertices by the
+              // mean velocity gradient of its liquid part: the gradient the
+              // flow step's stress term sees there. The Q1 gradient at a
+              // vertex outside the liquid depends on velocities that only
+              // the ghost penalty and a sliver of liquid set; the stress
+              // it stretches there enters the liquid through the Q1
+              // interpolation, without the flow step resisting that
+              // stretching, and grows by the strain bound in every step
+              // (the beam held by a no-slip wall, doc/bouncing_ball.md).
+              const BoxCellValues<dim> &values = liquid_values.reinit(cell);
+              for (const unsigned int v : cell->vertex_indices())
+                for (unsigned int d = 0; d < dim; ++d)
+                  vertex_u[v][d] = velocity(cell->vertex_dof_index(v, d));
+              Tensor<2, dim> mean;
+              double         volume = 0;
+              for (unsigned int q = 0; q < values.size(); ++q)
+                {
+                  for (const unsigned int v : cell->vertex_indices())
+                    for (unsigned int d = 0; d < dim; ++d)
+                      mean[d] +=
+                        vertex_u[v][d] * values.JxW[q] * values.gradient[q][v];
+                  volume += values.JxW[q];
+                }
+              if (volume > 0)
+                mean /= volume;
+              std::fill(grad_u.begin(), grad_u.end(), mean);
+            }
+          else
+            {
+              vertex_values.reinit(cell);
+              vertex_values[velocity_extractor].get_function_gradients(velocity,
+                                                                       grad_u);
+            }
+          const double weight = cell->measure();
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              SymmetricTensor<2, dim> advected;
+              for (unsigned int i = 0; i < n_stress; ++i)
+                advected.access_raw_entry(i) =
+                  fields.fields(cell->vertex_dof_index(v, first + i));
+              const Tensor<2, dim>          L = traceless(grad_u[v]);
+              const SymmetricTensor<2, dim> updated =
+                rheology.updated_stress(advected, L, tau);
+              report.max_velocity_gradient =
+                std::max(report.max_velocity_gradient, grad_u[v].norm());
+              if (rheology.is_strain_limited(L, tau))
+                ++report.strain_limited_points;
+              sum(cell->vertex_dof_index(v, 0)) += weight;
+              for (unsigned int i = 0; i < n_stress; ++i)
+                sum(cell->vertex_dof_index(v, first + i)) +=
+                  weight * updated.access_raw_entry(i);
+            }
+        }
+    sum.compress(VectorOperation::add);
+
+    for (const auto &node : fields.nodes())
+      {
+        const double weight = sum(node.dofs[0]);
+        if (weight > 0)
+          for (unsigned int i = 0; i < n_stress; ++i)
+            fields.fields(node.dofs[first + i]) =
+              sum(node.dofs[first + i]) / weight;
+      }
+    fields.finalize();
+    if (!outside_extended)
+      bound_stress_outside_liquid(fields, domain, rheology, sum);
+
+    const MPI_Comm comm =
+      fields.dof_handler.get_triangulation().get_communicator();
+    report.max_velocity_gradient =
+      Utilities::MPI::max(report.max_velocity_gradient, comm);
+    report.strain_limited_points =
+      Utilities::MPI::sum(report.strain_limited_points, comm);
+    return report;
+  }
+
+  template <int dim>
+  StressMeasure
+  measure_stress(const TransportedFields<dim> &fields,
+                 const LiquidDomain<dim>      &domain,
+                 const Rheology<dim>          &rheology)
+  {
+    LiquidValues<dim> liquid_values(domain);
+    std::array<SymmetricTensor<2, dim>, GeometryInfo<dim>::vertices_per_cell>
+      vertex_sigma;
+
+    StressMeasure measure;
+    bool          undefined_eigenvalue = false;
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && domain.has_liquid(cell))
+        {
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int c = 0;
+                 c < TransportedFields<dim>::n_stress_components;
+                 ++c)
+              vertex_sigma
+                [v][SymmetricTensor<2, dim>::unrolled_to_component_indices(c)] =
+                  fields.fields(cell->vertex_dof_index(
+                    v,
+                    TransportedFields<dim>::first_stress_component + c));
+          const BoxCellValues<dim> &values = liquid_values.reinit(cell);
+          for (unsigned int q = 0; q < values.size(); ++q)
+            {
+              const SymmetricTensor<2, dim> sigma =
+                values.value(vertex_sigma, q);
+              measure.elastic_energy +=
+                rheology.elastic_energy_density(sigma) * values.JxW[q];
+              const SymmetricTensor<2, dim> conformation =
+                rheology.conformation(sigma);
+              // Where even the bound is positive and above the smallest
+              // eigenvalue so far, the eigenvalue changes no statistic.
+              const double bound = gershgorin_lower_bound(conformation);
+              if (bound > 0 && bound >= measure.min_conformation_eigenvalue)
+                continue;
+              const double lowest = smallest_eigenvalue(conformation);
+              measure.min_conformation_eigenvalue =
+                std::min(measure.min_conformation_eigenvalue, lowest);
+              if (std::isnan(lowest))
+                undefined_eigenvalue = true;
+              if (!(lowest > 0))
+                ++measure.non_positive_points;
+            }
+        }
+    const MPI_Comm comm =
+      fields.dof_handler.get_triangulation().get_communicator();
+    measure.elastic_energy = Utilities::MPI::sum(measure.elastic_energy, comm);
+    measure.min_conformation_eigenvalue =
+      Utilities::MPI::min(measure.min_conformation_eigenvalue, comm);
+    measure.non_positive_points =
+      Utilities::MPI::sum(measure.non_positive_points, comm);
+    // std::min() passes over NaN: carry it to the statistic by hand.
+    if (Utilities::MPI::max(static_cast<unsigned int>(undefined_eigenvalue),
+                            comm) == 1)
+      measure.min_conformation_eigenvalue =
+        std::numeric_limits<double>::quiet_NaN();
+    return measure;
+  }
+
+  template StressUpdateReport
+  update_stress<2>(TransportedFields<2> &,
+                   const TransportedFields<2>::VectorType &,
+                   const LiquidDomain<2> &,
+                   const Rheology<2> &,
+                   const double,
+                   const bool);
+  template StressUpdateReport
+  update_stress<3>(TransportedFields<3> &,
+                   const TransportedFields<3>::VectorType &,
+                   const LiquidDomain<3> &,
+                   const Rheology<3> &,
+                   const double,
+                   const bool);
+  template StressMeasure
+  measure_stress<2>(const TransportedFields<2> &,
+                    const LiquidDomain<2> &,
+                    const Rheology<2> &);
+  template StressMeasure
+  measure_stress<3>(const TransportedFields<3> &,
+                    const LiquidDomain<3> &,
+                    const Rheology<3> &);
+} // namespace vefs

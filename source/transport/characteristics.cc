@@ -1,0 +1,608 @@
+#include <deal.II/base/mpi.h>
+
+#include <vefs/transport/characteristics.h>
+#include <vefs/transport/field_hermite.h>
+#include <vefs/transport/nodal_gradients.h>
+
+namespace vefs
+{
+  namespace
+  {
+    /**
+     * Values of all components of the fields at one point, followed by
+     * extras (from index first_extra): the velocity gradient du_i/dx_j at
+     * first_extra + dim i + j, or the level set gradient.
+     */
+    template <int dim>
+    using FieldValues =
+      Tensor<1, TransportedFields<dim>::max_components + dim * dim, double>;
+
+    template <int dim>
+    constexpr unsigned int first_extra = TransportedFields<dim>::max_components;
+
+    /** How values_in_cell interpolates, and which extras it adds. */
+    template <int dim>
+    struct Interpolation
+    {
+      /** The level set by this Hermite interpolation, if not null. */
+      const FieldHermite<dim> *hermite = nullptr;
+      bool                     limited = false;
+      /** Extras: the gradient of the (Hermite) level set. */
+      bool level_set_gradient = false;
+      /**
+       * Extras: the velocity gradient, Q1 from these nodal gradients (see
+       * recover_nodal_gradients()), if not null.
+       */
+      const std::array<typename TransportedFields<dim>::VectorType, dim>
+        *velocity_gradient = nullptr;
+      /** The velocity by this Hermite interpolation, if not null. */
+      const FieldHermite<dim> *velocity_hermite = nullptr;
+      bool                     velocity_limited = false;
+      /**
+       * The stress by this limited Hermite interpolation, if not null, where
+       * it keeps c = I + sigma / G (G = shear_modulus) positive definite.
+       */
+      const FieldHermite<dim> *stress_hermite = nullptr;
+      double                   shear_modulus  = 1;
+    };
+
+    /**
+     * The fields at the unit-cell point @p xi of @p cell (locally owned or
+     * ghost): Q1 unless @p how says otherwise.
+     */
+    template <int dim>
+    FieldValues<dim>
+    values_in_cell(
+      const typename Triangulation<dim>::active_cell_iterator &cell,
+      const Point<dim>                                        &xi,
+      const TransportedFields<dim>                            &fields,
+      const Interpolation<dim>                                &how)
+    {
+      constexpr unsigned int level_set =
+        TransportedFields<dim>::level_set_component;
+      FieldValues<dim> values;
+      const auto       dof_cell = fields.cell_of(cell);
+      if (const double *lattice = fields.coarsened_detail.lattice(cell))
+        // Coarsened before this advection: Q1 in the former child.
+        fields.coarsened_detail.add_values(lattice, xi, &values[0]);
+      else
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
+            for (unsigned int c = 0; c < fields.n_components; ++c)
+              values[c] +=
+                weight * fields.fields(dof_cell->vertex_dof_index(v, c));
+          }
+      if (how.velocity_gradient)
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                values[first_extra<dim> + dim * i + j] +=
+                  weight *
+                  (*how.velocity_gradient)[j](dof_cell->vertex_dof_index(v, i));
+          }
+      if (how.velocity_hermite)
+        for (unsigned int d = 0; d < dim; ++d)
+          values[d] =
+            how.velocity_hermite->component_value(fields,
+                                                  dof_cell,
+                                                  xi,
+                                                  d,
+                                                  how.velocity_limited);
+      if (how.stress_hermite)
+        {
+          constexpr unsigned int first =
+            TransportedFields<dim>::first_stress_component;
+          SymmetricTensor<2, dim> linear, cubic;
+          for (unsigned int i = 0;
+               i < TransportedFields<dim>::n_stress_components;
+               ++i)
+            {
+              linear.access_raw_entry(i) = values[first + i];
+              cubic.access_raw_entry(i) =
+                how.stress_hermite->component_value(fields,
+                                                    dof_cell,
+                                                    xi,
+                                                    first + i,
+                                                    true);
+            }
+          const auto smallest = [&](const SymmetricTensor<2, dim> &sigma) {
+            return eigenvalues(unit_symmetric_tensor<dim>() +
+                               sigma / how.shear_modulus)[dim - 1];
+          };
+          // The cubic stress only where c keeps at least half the smallest
+          // eigenvalue of the linear (convex) one.
+          if (smallest(cubic) >= 0.5 * smallest(linear))
+            for (unsigned int i = 0;
+                 i < TransportedFields<dim>::n_stress_components;
+                 ++i)
+              values[first + i] = cubic.access_raw_entry(i);
+        }
+      if (how.hermite)
+        {
+          Tensor<1, dim> gradient;
+          values[level_set] =
+            how.hermite->value(fields,
+                               dof_cell,
+                               xi,
+                               how.limited,
+                               how.level_set_gradient ? &gradient : nullptr);
+          if (how.level_set_gradient)
+            for (unsigned int d = 0; d < dim; ++d)
+              values[first_extra<dim> + d] = gradient[d];
+        }
+      return values;
+    }
+
+    /**
+     * The fields at @p points, which lie in cells artificial on this rank:
+     * the locator names the rank that owns each point (from p4est's
+     * partition), and that rank locates and evaluates it. Collective.
+     * (deal.II 9.4's RemotePointEvaluation searched all active cells for
+     * every point: 77 % of a step of the 3D ball at 2.5 mm on two ranks.)
+     */
+    template <int dim>
+    std::vector<FieldValues<dim>>
+    evaluate_remotely(const std::vector<Point<dim>> &points,
+                      const TransportedFields<dim>  &fields,
+                      const BoxMeshLocator<dim>     &locator,
+                      const Interpolation<dim>      &how)
+    {
+      const MPI_Comm comm =
+        fields.dof_handler.get_triangulation().get_communicator();
+      std::vector<types::subdomain_id> owners(points.size());
+      for (unsigned int i = 0; i < points.size(); ++i)
+        owners[i] = locator.owner_rank(points[i]);
+
+      // Coordinates to the owners, flat.
+      std::map<unsigned int, std::vector<double>>       asked;
+      std::map<unsigned int, std::vector<unsigned int>> asked_points;
+      for (unsigned int i = 0; i < points.size(); ++i)
+        {
+          asked_points[owners[i]].push_back(i);
+          for (unsigned int d = 0; d < dim; ++d)
+            asked[owners[i]].push_back(points[i][d]);
+        }
+
+      constexpr unsigned int n_values =
+        FieldValues<dim>::n_independent_components;
+      std::map<unsigned int, std::vector<double>> answers;
+      for (const auto &[rank, coordinates] :
+           Utilities::MPI::some_to_some(comm, asked))
+        {
+          auto &answer = answers[rank];
+          answer.reserve(coordinates.size() / dim * n_values);
+          for (unsigned int k = 0; k < coordinates.size(); k += dim)
+            {
+              Point<dim> p;
+              for (unsigned int d = 0; d < dim; ++d)
+                p[d] = coordinates[k + d];
+              const auto cell = locator.locate(p);
+              AssertThrow(!cell->is_artificial(),
+                          ExcMessage("A point p4est places on this rank lies "
+                                     "in a cell it does not know."));
+              const auto values =
+                values_in_cell(cell,
+                               BoxMeshLocator<dim>::unit_point(cell, p),
+                               fields,
+                               how);
+              for (unsigned int c = 0; c < n_values; ++c)
+                answer.push_back(values[c]);
+            }
+        }
+
+      std::vector<FieldValues<dim>> result(points.size());
+      for (const auto &[rank, values] :
+           Utilities::MPI::some_to_some(comm, answers))
+        {
+          const auto &indices = asked_points.at(rank);
+          AssertThrow(values.size() == indices.size() * n_values,
+                      ExcInternalError());
+          for (unsigned int k = 0; k < indices.size(); ++k)
+            for (unsigned int c = 0; c < n_values; ++c)
+              result[indices[k]][c] = values[k * n_values + c];
+        }
+      return result;
+    }
+
+    /**
+     * The fields at arbitrary points: in the local part of the mesh (owned
+     * and ghost cells) in the cell the locator finds, elsewhere on the ranks
+     * that own them (evaluate_remotely()).
+     */
+    template <int dim>
+    std::vector<FieldValues<dim>>
+    evaluate_at(const std::vector<Point<dim>> &points,
+                const TransportedFields<dim>  &fields,
+                const BoxMeshLocator<dim>     &locator,
+                const Interpolation<dim>      &how)
+    {
+      std::vector<FieldValues<dim>> values(points.size());
+      std::vector<unsigned int>     remote;
+      for (unsigned int i = 0; i < points.size(); ++i)
+        {
+          const auto cell = locator.locate(points[i]);
+          if (cell->is_artificial())
+            {
+              remote.push_back(i);
+              continue;
+            }
+          values[i] =
+            values_in_cell(cell,
+                           BoxMeshLocator<dim>::unit_point(cell, points[i]),
+                           fields,
+                           how);
+        }
+
+      const auto &triangulation = fields.dof_handler.get_triangulation();
+      if (!Utilities::MPI::logical_or(!remote.empty(),
+                                      triangulation.get_communicator()))
+        return values;
+
+      std::vector<Point<dim>> remote_points;
+      for (const unsigned int i : remote)
+        remote_points.push_back(points[i]);
+      const auto remote_values =
+        evaluate_remotely(remote_points, fields, locator, how);
+      for (unsigned int k = 0; k < remote.size(); ++k)
+        values[remote[k]] = remote_values[k];
+      return values;
+    }
+
+    /**
+     * Four-stage (classical Runge-Kutta) trace of @p starts back through
+     * the frozen velocity field of @p fields over @p tau, given the
+     * velocity @p k and its gradient @p dk at the starts (both overwritten
+     * by those of the later stages): with the cubic
+     * level set the error of the midpoint trace dominated at CFL 5 (vortex,
+     * h = 1/128: L1 3.4e-3 -> 2.4e-3 with exact fourth-order feet). J =
+     * dX/dx follows the stages, with the velocity gradient G recovered at
+     * the nodes (the Q1 one is first order only): dk_s/dx = G(x_s) dx_s/dx.
+     */
+    template <int dim>
+    void
+    four_stage_trace(
+      const TransportedFields<dim> &fields,
+      const std::array<typename TransportedFields<dim>::VectorType, dim>
+                                    &velocity_gradient,
+      const double                   tau,
+      const BoxMeshLocator<dim>     &locator,
+      const std::vector<Point<dim>> &starts,
+      std::vector<Tensor<1, dim>>   &k,
+      std::vector<Tensor<2, dim>>   &dk,
+      std::vector<Point<dim>>       &feet,
+      std::vector<Tensor<2, dim>>   &jacobians)
+    {
+      Interpolation<dim> at_stage;
+      at_stage.velocity_gradient    = &velocity_gradient;
+      const Tensor<2, dim> identity = unit_symmetric_tensor<dim>();
+
+      feet.resize(starts.size());
+      jacobians.resize(starts.size());
+      for (unsigned int i = 0; i < starts.size(); ++i)
+        {
+          feet[i]      = starts[i] - tau / 6 * k[i];
+          jacobians[i] = identity - tau / 6 * dk[i];
+        }
+      std::vector<Point<dim>> points(starts.size());
+      const double            fractions[3] = {0.5, 0.5, 1};
+      const double            weights[3]   = {2, 2, 1};
+      for (unsigned int stage = 0; stage < 3; ++stage)
+        {
+          for (unsigned int i = 0; i < starts.size(); ++i)
+            points[i] = locator.fold_into_cavity(starts[i] -
+                                                 fractions[stage] * tau * k[i]);
+          const auto at_stage_points =
+            evaluate_at(points, fields, locator, at_stage);
+          for (unsigned int i = 0; i < starts.size(); ++i)
+            {
+              Tensor<2, dim> G;
+              for (unsigned int a = 0; a < dim; ++a)
+                {
+                  k[i][a] = at_stage_points[i][a];
+                  for (unsigned int b = 0; b < dim; ++b)
+                    G[a][b] =
+                      at_stage_points[i][first_extra<dim> + dim * a + b];
+                }
+              dk[i] = G * (identity - fractions[stage] * tau * dk[i]);
+              feet[i] -= weights[stage] * tau / 6 * k[i];
+              jacobians[i] -= weights[stage] * tau / 6 * dk[i];
+            }
+        }
+    }
+
+    /**
+     * How the level set is interpolated at the feet as @p interpolation
+     * says: the Hermite modes recover their nodal derivatives into
+     * @p hermite, which must outlive the result.
+     */
+    template <int dim>
+    Interpolation<dim>
+    level_set_interpolation(const TransportedFields<dim> &fields,
+                            const LevelSetInterpolation   interpolation,
+                            FieldHermite<dim>            &hermite)
+    {
+      Interpolation<dim> how;
+      if (interpolation == LevelSetInterpolation::linear)
+        return how;
+      const bool gradient_augmented =
+        interpolation == LevelSetInterpolation::gradient_augmented;
+      hermite.recover(fields, gradient_augmented);
+      how.hermite = &hermite;
+      how.limited = interpolation == LevelSetInterpolation::limited_cubic;
+      how.level_set_gradient = gradient_augmented;
+      return how;
+    }
+
+    /**
+     * The feet of the characteristics of all owned nodes by the two-stage
+     * (midpoint) trace, not yet moved back into the cavity.
+     */
+    template <int dim>
+    std::vector<Point<dim>>
+    midpoint_feet(const TransportedFields<dim> &fields,
+                  const double                  tau,
+                  const BoxMeshLocator<dim>    &locator)
+    {
+      const auto             &nodes = fields.nodes();
+      std::vector<Point<dim>> points(nodes.size());
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        points[i] = locator.fold_into_cavity(
+          nodes[i].point - 0.5 * tau * fields.velocity(nodes[i]));
+      const auto at_midpoints =
+        evaluate_at(points, fields, locator, Interpolation<dim>());
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        {
+          Tensor<1, dim> u;
+          for (unsigned int d = 0; d < dim; ++d)
+            u[d] = at_midpoints[i][d];
+          points[i] = nodes[i].point - tau * u;
+        }
+      return points;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  advect_along_characteristics(TransportedFields<dim>    &fields,
+                               const double               tau,
+                               const BoxMeshLocator<dim> &locator,
+                               const FootInterpolation   &interpolation)
+  {
+    const auto &nodes = fields.nodes();
+
+    const bool gradient_augmented =
+      interpolation.level_set == LevelSetInterpolation::gradient_augmented;
+
+    std::vector<Point<dim>> points(nodes.size());
+    // The feet, and with the gradient augmented level set J = dX/dx.
+    std::vector<Point<dim>>     feet(nodes.size());
+    std::vector<Tensor<2, dim>> jacobians;
+    if (!gradient_augmented)
+      feet = midpoint_feet(fields, tau, locator);
+    else
+      {
+        // Four-stage trace, with J = dX/dx for the gradient.
+        const auto velocity_gradient = recover_nodal_gradients(fields, dim);
+        std::vector<Tensor<1, dim>> k(nodes.size());
+        std::vector<Tensor<2, dim>> dk(nodes.size());
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          {
+            points[i] = nodes[i].point;
+            k[i]      = fields.velocity(nodes[i]);
+            for (unsigned int a = 0; a < dim; ++a)
+              for (unsigned int b = 0; b < dim; ++b)
+                dk[i][a][b] = velocity_gradient[b](nodes[i].dofs[a]);
+          }
+        four_stage_trace<dim>(fields,
+                              velocity_gradient,
+                              tau,
+                              locator,
+                              points,
+                              k,
+                              dk,
+                              feet,
+                              jacobians);
+      }
+
+    std::vector<double> beyond_contact(nodes.size());
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        beyond_contact[i] = locator.distance_beyond_contact_walls(feet[i]);
+        points[i]         = locator.fold_into_cavity(feet[i]);
+      }
+
+    FieldHermite<dim> hermite;
+    auto              how =
+      level_set_interpolation(fields, interpolation.level_set, hermite);
+    std::vector<unsigned int> cubic_components;
+    if (interpolation.velocity != VelocityInterpolation::linear)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          cubic_components.push_back(d);
+        how.velocity_hermite = &hermite;
+        how.velocity_limited =
+          interpolation.velocity == VelocityInterpolation::limited_cubic;
+      }
+    if (interpolation.cubic_stress && fields.has_stress())
+      {
+        for (unsigned int i = 0;
+             i < TransportedFields<dim>::n_stress_components;
+             ++i)
+          cubic_components.push_back(
+            TransportedFields<dim>::first_stress_component + i);
+        how.stress_hermite = &hermite;
+        how.shear_modulus  = interpolation.shear_modulus;
+      }
+    if (!cubic_components.empty())
+      hermite.recover_components(fields, cubic_components);
+    auto at_feet = evaluate_at(points, fields, locator, how);
+    // Liquid that leaves a contact wall leaves empty space behind: a foot
+    // beyond the wall is that far outside the liquid.
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      if (beyond_contact[i] > 0)
+        at_feet[i][TransportedFields<dim>::level_set_component] =
+          std::max(at_feet[i][TransportedFields<dim>::level_set_component],
+                   beyond_contact[i]);
+
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      for (unsigned int c = 0; c < fields.n_components; ++c)
+        fields.fields(nodes[i].dofs[c]) = at_feet[i][c];
+
+    if (gradient_augmented)
+      for (unsigned int i = 0; i < nodes.size(); ++i)
+        {
+          // grad psi_new(x) = J^T grad psi_old(X(x)).
+          const Tensor<2, dim> &J = jacobians[i];
+          Tensor<1, dim>        old_gradient;
+          for (unsigned int d = 0; d < dim; ++d)
+            old_gradient[d] = at_feet[i][first_extra<dim> + d];
+          const Tensor<1, dim> new_gradient = old_gradient * J;
+          for (unsigned int d = 0; d < dim; ++d)
+            fields.level_set_gradient(nodes[i].dofs[d]) = new_gradient[d];
+        }
+    fields.finalize();
+  }
+
+  template <int dim>
+  void
+  trace_back(const TransportedFields<dim> &fields,
+             const std::array<typename TransportedFields<dim>::VectorType, dim>
+                                         &velocity_gradient,
+             const double                 tau,
+             const BoxMeshLocator<dim>   &locator,
+             std::vector<Point<dim>>     &points,
+             std::vector<Tensor<2, dim>> *jacobians,
+             std::vector<double>         &beyond_contact)
+  {
+    Interpolation<dim> at_start;
+    at_start.velocity_gradient = &velocity_gradient;
+    const auto at_points       = evaluate_at(points, fields, locator, at_start);
+    std::vector<Tensor<1, dim>> k(points.size());
+    std::vector<Tensor<2, dim>> dk(points.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int a = 0; a < dim; ++a)
+        {
+          k[i][a] = at_points[i][a];
+          for (unsigned int b = 0; b < dim; ++b)
+            dk[i][a][b] = at_points[i][first_extra<dim> + dim * a + b];
+        }
+    std::vector<Point<dim>>     feet;
+    std::vector<Tensor<2, dim>> step_jacobians;
+    four_stage_trace<dim>(fields,
+                          velocity_gradient,
+                          tau,
+                          locator,
+                          points,
+                          k,
+                          dk,
+                          feet,
+                          step_jacobians);
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        beyond_contact[i] =
+          std::max(beyond_contact[i],
+                   locator.distance_beyond_contact_walls(feet[i]));
+        points[i] = locator.fold_into_cavity(feet[i]);
+        // Chain rule: the newer steps were traced first.
+        if (jacobians)
+          (*jacobians)[i] = step_jacobians[i] * (*jacobians)[i];
+      }
+  }
+
+  template <int dim>
+  typename TransportedFields<dim>::VectorType
+  predict_level_set(const TransportedFields<dim> &fields,
+                    const double                  tau,
+                    const BoxMeshLocator<dim>    &locator)
+  {
+    constexpr unsigned int  c     = TransportedFields<dim>::level_set_component;
+    const auto             &nodes = fields.nodes();
+    std::vector<Point<dim>> feet  = midpoint_feet(fields, tau, locator);
+    std::vector<double>     beyond_contact(nodes.size());
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        beyond_contact[i] = locator.distance_beyond_contact_walls(feet[i]);
+        feet[i]           = locator.fold_into_cavity(feet[i]);
+      }
+    const auto at_feet =
+      evaluate_at(feet, fields, locator, Interpolation<dim>());
+
+    typename TransportedFields<dim>::VectorType predicted;
+    fields.initialize_vector(predicted);
+    // As in the advection: only a foot beyond a contact wall is outside the
+    // liquid by its distance. Elsewhere that distance is 0, and taking it
+    // would lift psi to 0 in all the liquid: every liquid cell would look
+    // cut and be refined before the advection.
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      predicted(nodes[i].dofs[c]) =
+        beyond_contact[i] > 0 ? std::max(at_feet[i][c], beyond_contact[i])
+                              : at_feet[i][c];
+    predicted.update_ghost_values();
+    fields.distribute_constraints(predicted);
+    predicted.update_ghost_values();
+    return predicted;
+  }
+
+  template <int dim>
+  std::vector<std::pair<double, Tensor<1, dim>>>
+  level_set_at(const TransportedFields<dim>  &fields,
+               const std::vector<Point<dim>> &points,
+               const BoxMeshLocator<dim>     &locator,
+               const LevelSetInterpolation    interpolation)
+  {
+    const bool gradient_augmented =
+      interpolation == LevelSetInterpolation::gradient_augmented;
+    FieldHermite<dim> hermite;
+    const auto        values =
+      evaluate_at(points,
+                  fields,
+                  locator,
+                  level_set_interpolation(fields, interpolation, hermite));
+    std::vector<std::pair<double, Tensor<1, dim>>> result(points.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        result[i].first =
+          values[i][TransportedFields<dim>::level_set_component];
+        if (gradient_augmented)
+          for (unsigned int d = 0; d < dim; ++d)
+            result[i].second[d] = values[i][first_extra<dim> + d];
+      }
+    return result;
+  }
+
+#define VEFS_INSTANTIATE(dim)                                                  \
+  template void trace_back<dim>(                                               \
+    const TransportedFields<dim> &,                                            \
+    const std::array<typename TransportedFields<dim>::VectorType, dim> &,      \
+    const double,                                                              \
+    const BoxMeshLocator<dim> &,                                               \
+    std::vector<Point<dim>> &,                                                 \
+    std::vector<Tensor<2, dim>> *,                                             \
+    std::vector<double> &);                                                    \
+  template std::vector<std::pair<double, Tensor<1, dim>>> level_set_at<dim>(   \
+    const TransportedFields<dim> &,                                            \
+    const std::vector<Point<dim>> &,                                           \
+    const BoxMeshLocator<dim> &,                                               \
+    const LevelSetInterpolation);                                              \
+  template typename TransportedFields<dim>::VectorType predict_level_set<dim>( \
+    const TransportedFields<dim> &,                                            \
+    const double,                                                              \
+    const BoxMeshLocator<dim> &);
+  VEFS_INSTANTIATE(2)
+  VEFS_INSTANTIATE(3)
+#undef VEFS_INSTANTIATE
+
+  template void
+  advect_along_characteristics<2>(TransportedFields<2> &,
+                                  const double,
+                                  const BoxMeshLocator<2> &,
+                                  const FootInterpolation &);
+  template void
+  advect_along_characteristics<3>(TransportedFields<3> &,
+                                  const double,
+                                  const BoxMeshLocator<3> &,
+                                  const FootInterpolation &);
+} // namespace vefs

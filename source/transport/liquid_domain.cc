@@ -1,0 +1,239 @@
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/non_matching/quadrature_generator.h>
+
+#include <vefs/transport/liquid_domain.h>
+
+#include <array>
+
+namespace vefs
+{
+  namespace
+  {
+    /**
+     * The Q1 level set of one cell on the reference cell [0,1]^dim, from its
+     * vertex values (deal.II's lexicographic vertex order: bit d of the
+     * vertex number is the d-th reference coordinate).
+     */
+    template <int dim>
+    class CellLevelSet : public Function<dim>
+    {
+    public:
+      static constexpr unsigned int n_vertices = 1u << dim;
+
+      explicit CellLevelSet(const std::array<double, n_vertices> &values)
+        : values(values)
+      {
+      }
+
+      double
+      value(const Point<dim> &xi, const unsigned int = 0) const override
+      {
+        double result = 0;
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          result += values[v] * shape(v, xi, dim);
+        return result;
+      }
+
+      Tensor<1, dim>
+      gradient(const Point<dim> &xi, const unsigned int = 0) const override
+      {
+        Tensor<1, dim> result;
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          for (unsigned int d = 0; d < dim; ++d)
+            result[d] += values[v] * shape(v, xi, d);
+        return result;
+      }
+
+      SymmetricTensor<2, dim>
+      hessian(const Point<dim> &xi, const unsigned int = 0) const override
+      {
+        SymmetricTensor<2, dim> result;
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          for (unsigned int d = 0; d < dim; ++d)
+            for (unsigned int e = d + 1; e < dim; ++e)
+              result[d][e] += values[v] * shape(v, xi, d, e);
+        return result;
+      }
+
+    private:
+      /**
+       * The shape function of vertex @p v, differentiated in the reference
+       * directions @p d and @p e (none if equal to dim).
+       */
+      static double
+      shape(const unsigned int v,
+            const Point<dim>  &xi,
+            const unsigned int d,
+            const unsigned int e = dim)
+      {
+        double result = 1;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const bool upper = (v >> c) & 1;
+            if (c == d || c == e)
+              result *= upper ? 1. : -1.;
+            else
+              result *= upper ? xi[c] : 1. - xi[c];
+          }
+        return result;
+      }
+
+      const std::array<double, n_vertices> values;
+    };
+
+    /**
+     * Cuts the cells of the mesh by the Q1 level set psi + shift: where a
+     * cell lies, and for a cut cell the quadratures of its liquid part and
+     * surface on the reference cell.
+     */
+    template <int dim>
+    class CellCutter
+    {
+    public:
+      using Location = typename LiquidDomain<dim>::Location;
+
+      CellCutter(const TransportedFields<dim> &fields, const double shift)
+        : fields(fields)
+        , shift(shift)
+        , gauss_rule(QGauss<1>(LiquidDomain<dim>::n_gauss_points))
+        , generator(gauss_rule)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          upper[d] = 1;
+      }
+
+      /** Where @p cell lies; a cut cell's quadratures follow from inside()
+       * and surface() until the next call. */
+      template <typename CellIterator>
+      Location
+      cut(const CellIterator &cell)
+      {
+        double lowest  = std::numeric_limits<double>::max();
+        double highest = -lowest;
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            values[v] = fields.fields(cell->vertex_dof_index(
+                          v,
+                          TransportedFields<dim>::level_set_component)) +
+                        shift;
+            lowest  = std::min(lowest, values[v]);
+            highest = std::max(highest, values[v]);
+          }
+        // A Q1 function takes its extremes at the vertices.
+        if (!(lowest < 0))
+          return Location::empty;
+        if (highest <= 0)
+          return Location::full;
+        generator.generate(CellLevelSet<dim>(values),
+                           BoundingBox<dim>(
+                             std::make_pair(Point<dim>(), upper)));
+        return Location::cut;
+      }
+
+      const Quadrature<dim> &
+      inside() const
+      {
+        return generator.get_inside_quadrature();
+      }
+
+      /** The liquid fraction of the cut cell: inside()'s weights. */
+      double
+      inside_fraction() const
+      {
+        double fraction = 0;
+        for (const double w : inside().get_weights())
+          fraction += w;
+        return fraction;
+      }
+
+      const NonMatching::ImmersedSurfaceQuadrature<dim> &
+      surface() const
+      {
+        return generator.get_surface_quadrature();
+      }
+
+      /** The cut cell's level set, for the quadratures' points. */
+      CellLevelSet<dim>
+      level_set() const
+      {
+        return CellLevelSet<dim>(values);
+      }
+
+    private:
+      const TransportedFields<dim> &fields;
+      const double                  shift;
+      // The generator keeps a reference to its 1D rule.
+      const hp::QCollection<1>                          gauss_rule;
+      NonMatching::QuadratureGenerator<dim>             generator;
+      Point<dim>                                        upper;
+      std::array<double, CellLevelSet<dim>::n_vertices> values;
+    };
+  } // namespace
+
+  template <int dim>
+  LiquidDomain<dim>::LiquidDomain(const TransportedFields<dim> &fields)
+    : fraction(fields.dof_handler.get_triangulation().n_active_cells())
+    , locations(fraction.size(), Location::empty)
+    , cut_index(fraction.size(), numbers::invalid_unsigned_int)
+  {
+    CellCutter<dim> cutter(fields, 0);
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          const unsigned int index = cell->active_cell_index();
+          locations[index]         = cutter.cut(cell);
+          if (locations[index] == Location::full)
+            fraction[index] = 1;
+          else if (locations[index] == Location::cut)
+            {
+              cut_index[index] = cut_cells.size();
+              cut_cells.push_back({cutter.inside(), cutter.surface()});
+              fraction[index] = cutter.inside_fraction();
+            }
+        }
+  }
+
+  template <int dim>
+  SharpVolume
+  sharp_liquid_volume(const TransportedFields<dim> &fields, const double shift)
+  {
+    using Location = typename LiquidDomain<dim>::Location;
+    CellCutter<dim> cutter(fields, shift);
+    SharpVolume     result;
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const Location location = cutter.cut(cell);
+          if (location == Location::full)
+            result.volume += cell->measure();
+          else if (location == Location::cut)
+            {
+              // On the reference cell dV/dshift = -int 1/|grad psi| over
+              // the surface; the box maps volumes by its measure.
+              double      derivative = 0;
+              const auto  level_set  = cutter.level_set();
+              const auto &surface    = cutter.surface();
+              for (unsigned int q = 0; q < surface.size(); ++q)
+                derivative -= surface.weight(q) /
+                              level_set.gradient(surface.point(q)).norm();
+              result.volume += cutter.inside_fraction() * cell->measure();
+              result.derivative += derivative * cell->measure();
+            }
+        }
+    const MPI_Comm comm =
+      fields.dof_handler.get_triangulation().get_communicator();
+    result.volume     = Utilities::MPI::sum(result.volume, comm);
+    result.derivative = Utilities::MPI::sum(result.derivative, comm);
+    return result;
+  }
+
+  template class LiquidDomain<2>;
+  template class LiquidDomain<3>;
+  template SharpVolume
+  sharp_liquid_volume(const TransportedFields<2> &, const double);
+  template SharpVolume
+  sharp_liquid_volume(const TransportedFields<3> &, const double);
+} // namespace vefs

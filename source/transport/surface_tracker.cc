@@ -1,0 +1,149 @@
+#include <vefs/transport/free_surface.h>
+#include <vefs/transport/redistancing.h>
+#include <vefs/transport/surface_tracker.h>
+
+#include <algorithm>
+
+namespace vefs
+{
+  template <int dim>
+  SurfaceTracker<dim>::SurfaceTracker(
+    const Parameters                          &parameters,
+    parallel::distributed::Triangulation<dim> &triangulation,
+    MeshLevels                                &levels,
+    const BoxMeshLocator<dim>                 &locator,
+    const double                               shear_modulus,
+    TimerOutput                               &timer)
+    : parameters(parameters)
+    , triangulation(triangulation)
+    , levels(levels)
+    , locator(locator)
+    , timer(timer)
+    , foot_interpolation(parameters, shear_modulus)
+    , level_set_history(parameters.remap_distance)
+  {
+  }
+
+  template <int dim>
+  void
+  SurfaceTracker<dim>::add_columns(StatisticsFile<dim> &statistics) const
+  {
+    if (parameters.band_predicted)
+      statistics.add_column("advected_cells",
+                            [](const auto &s) { return s.advected_cells; });
+  }
+
+  template <int dim>
+  void
+  SurfaceTracker<dim>::advect(TransportedFields<dim>    &fields,
+                              const VelocitySource<dim> &velocity,
+                              const TimeControl         &time,
+                              StepStatistics<dim>       &statistics)
+  {
+    const double tau        = time.tau();
+    statistics.mesh_changes = 0;
+    if (parameters.band_predicted)
+      {
+        // Refine where the surface will be before it gets there: the band
+        // need not be widened by the CFL number.
+        typename TransportedFields<dim>::VectorType surface_ahead;
+        {
+          TimerOutput::Scope scope(timer, "1 advection: predict");
+          velocity.set_advection_velocity(fields, time);
+          surface_ahead = predict_level_set(fields, tau, locator);
+        }
+        TimerOutput::Scope scope(timer, "1 advection: refine ahead");
+        statistics.mesh_changes +=
+          refine_ahead_of_surface(triangulation,
+                                  fields,
+                                  levels,
+                                  levels.max_level - levels.min_level,
+                                  parameters.level_set_interpolation,
+                                  surface_ahead,
+                                  parameters.band_in_one_change);
+        statistics.advected_cells = triangulation.n_global_active_cells();
+      }
+
+    // Between remaps the level set is the one of the last remap through
+    // all steps since (LevelSetHistory).
+    TimerOutput::Scope scope(timer, "1 advection");
+    velocity.set_advection_velocity(fields, time);
+    level_set_history.add_step(fields, tau);
+    advect_along_characteristics(fields, tau, locator, foot_interpolation);
+    fields.coarsened_detail.clear();
+    remap = true;
+    if (level_set_history.enabled())
+      {
+        level_set_history.compose(fields,
+                                  locator,
+                                  parameters.level_set_interpolation);
+        remap = level_set_history.remap_due(time.cfl(), time.expected_cfl());
+      }
+    if (remap && parameters.redistancing_interval > 0 &&
+        time.step() % parameters.redistancing_interval == 0)
+      redistance(fields, parameters.level_set_interpolation);
+    if (parameters.volume_correction)
+      {
+        const double shift = correct_volume(fields, volume_expected);
+        if (!remap)
+          level_set_history.shift_base(fields, shift);
+      }
+  }
+
+  template <int dim>
+  LiquidDomain<dim>
+  SurfaceTracker<dim>::adapt_mesh(TransportedFields<dim> &fields,
+                                  const TimeControl      &time,
+                                  StepStatistics<dim>    &statistics)
+  {
+    // Refined and coarsened in one change before the advection, the mesh
+    // changes again only where the surface left the finest cells in more
+    // than 'Band miss tolerance' of its cells.
+    TimerOutput::Scope scope(timer, "2 mesh adaptation");
+    const SurfaceCells surface =
+      count_surface_cells(fields, parameters.max_level);
+    statistics.coarse_surface_cells = surface.coarse;
+    if (remap &&
+        (!parameters.band_in_one_change ||
+         surface.coarse > parameters.band_miss_tolerance * surface.total))
+      {
+        levels.expect_cfl(std::max(time.expected_cfl(),
+                                   level_set_history.cells_between_remaps()));
+        if (vefs::adapt_mesh(triangulation,
+                             fields,
+                             levels,
+                             1,
+                             parameters.level_set_interpolation))
+          ++statistics.mesh_changes;
+        level_set_history.remap(fields);
+      }
+    return LiquidDomain<dim>(fields);
+  }
+
+  template <int dim>
+  void
+  SurfaceTracker<dim>::set_initial_volume(const double volume)
+  {
+    volume_at_start = volume;
+    volume_expected = volume;
+  }
+
+  template <int dim>
+  void
+  SurfaceTracker<dim>::resume(const double initial_volume,
+                              const double expected_volume)
+  {
+    volume_at_start = initial_volume;
+    volume_expected = expected_volume;
+  }
+
+  template <int dim>
+  void
+  SurfaceTracker<dim>::remove_outflow(const double volume)
+  {
+    volume_expected -= volume;
+  }
+
+  template class SurfaceTracker<2>;
+  template class SurfaceTracker<3>;
+} // namespace vefs
