@@ -33,6 +33,7 @@ namespace vefs
              name == "solution.pvd" || name == CheckpointNames::current ||
              name == CheckpointNames::next ||
              name == CheckpointNames::previous ||
+             name == CheckpointNames::damaged ||
              (name.rfind("solution_", 0) == 0 &&
               (ends_with(".vtu") || ends_with(".pvtu")));
     }
