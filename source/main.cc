@@ -178,7 +178,7 @@ main(int argc, char *argv[])
     {
       try
         {
-          checkpoint = find_checkpoint(resume_directory);
+          checkpoint = find_checkpoint(resume_directory, MPI_COMM_WORLD);
         }
       catch (const InputError &error)
         {

@@ -1,7 +1,7 @@
 # `vefs --resume` refuses, with one message and exit status 1, a directory
 # without a checkpoint, a parameter file beside the option, a directory in
 # use (its lock file exists), a damaged checkpoint file and an incomplete
-# state file; it takes over the lock of a killed run; a new run into the
+# state file (without checkpoint.old/ to fall back to); it takes over the lock of a killed run; a new run into the
 # directory removes the old checkpoint.
 set -u
 cat > scene.prm <<'PRM'
@@ -44,6 +44,9 @@ touch output/vefs.lock
 attempt "directory in use" --resume output
 rm output/vefs.lock
 
+# A damaged checkpoint without the one before (checkpoint.old/; with it,
+# see checkpoint_damage.cmd) is refused.
+rm -r output/checkpoint.old
 /usr/bin/python3 - <<'PY'
 with open("output/checkpoint/mesh", "r+b") as f:
     f.seek(100)

@@ -4,6 +4,8 @@
 #include <vefs/base/parameters.h>
 #include <vefs/base/resource_limits.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -961,6 +963,39 @@ namespace vefs
               "Walls/" + wall_names[2 * d + 1],
               "walls " + wall_names[2 * d] + " and " + wall_names[2 * d + 1] +
                 " are periodic together or not at all");
+    // A relative reduction below round-off cannot be reached: the solver
+    // would run to 'Maximum iterations' and blame the time step.
+    require(solver_tolerance >= 1e-14 && solver_tolerance < 1,
+            "Solver/Tolerance",
+            "the relative residual reduction must lie in [1e-14, 1); smaller "
+            "ones are below the round-off of the solver in double precision");
+    require(contact_solver_tolerance < 1,
+            "Solver/Contact tolerance",
+            "the relative residual reduction must lie in [0, 1) (0: every "
+            "contact iteration is solved to 'Tolerance')");
+    // A 2D scene has no z walls: an entry there cannot mean anything.
+    if (dimension == 2)
+      for (unsigned int w = 4; w < 6; ++w)
+        {
+          const auto compact = [](std::string text) {
+            text.erase(std::remove_if(text.begin(),
+                                      text.end(),
+                                      [](const char c) {
+                                        return std::isspace(
+                                          static_cast<unsigned char>(c));
+                                      }),
+                       text.end());
+            return text;
+          };
+          require(compact(wall_velocity[w]) == "0;0",
+                  "Walls/" + wall_names[w] + " velocity",
+                  "a 2D scene (Dimension = 2) has no z walls; remove the "
+                  "entry");
+          require(wall_type[w] == (w == 4 ? WallType::slip : WallType::open),
+                  "Walls/" + wall_names[w],
+                  "a 2D scene (Dimension = 2) has no z walls; remove the "
+                  "entry");
+        }
     require(probe_point.empty() || probe_point.size() == dimension,
             "Postprocess/Probe point",
             "needs " + dim_text + " comma-separated numbers or nothing");

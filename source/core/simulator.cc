@@ -11,6 +11,7 @@
 #include <vefs/transport/initial_liquid.h>
 
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 namespace vefs
@@ -361,10 +362,27 @@ namespace vefs
             stress.non_positive_points;
         }
       if (!parameters.probe_point.empty())
-        statistics.probe_velocity =
-          probe_velocity(fields,
-                         *locator,
-                         to_point<dim>(parameters.probe_point));
+        {
+          const Probe<dim> probe =
+            probe_velocity(fields,
+                           *locator,
+                           to_point<dim>(parameters.probe_point));
+          statistics.probe_velocity = probe.velocity;
+          // The columns are not zeroed outside: say once what they hold.
+          if (!probe.in_liquid && !probe_outside_said)
+            {
+              if (Utilities::MPI::this_mpi_process(comm) == 0)
+                std::cerr << "vefs: warning: step " << time.step()
+                          << " (t = " << time.time()
+                          << "): the point of 'Postprocess/Probe point' lies "
+                             "outside the liquid; then the columns probe_u_* "
+                             "hold the velocity field there, which outside "
+                             "the liquid is only the extension the transport "
+                             "uses (0 beyond the band around the surface)"
+                          << std::endl;
+              probe_outside_said = true;
+            }
+        }
       if (exact_final_level_set)
         {
           // Only the final shape is known exactly.

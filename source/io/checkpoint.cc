@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -18,8 +19,13 @@ namespace vefs
   {
     namespace fs = std::filesystem;
 
-    /** First line of the state file; the number changes with its format. */
-    const std::string magic = "vefs checkpoint 2";
+    /**
+     * First line of the state file; the number changes with its format.
+     * Format 3 ends with a line "checksum HEX" of the bytes before it;
+     * format 2 (without it) is still read.
+     */
+    const std::string magic   = "vefs checkpoint 3";
+    const std::string magic_2 = "vefs checkpoint 2";
 
     /** Exactly, as a C99 hexadecimal float. */
     std::string
@@ -30,24 +36,75 @@ namespace vefs
       return text;
     }
 
+    const std::uint64_t fnv_offset = 14695981039346656037ull;
+
+    /** FNV-1a, continued from @p hash over @p n bytes. */
+    std::uint64_t
+    fnv1a(std::uint64_t hash, const char *bytes, const std::size_t n)
+    {
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          hash ^= static_cast<unsigned char>(bytes[i]);
+          hash *= 1099511628211ull;
+        }
+      return hash;
+    }
+
+    std::string
+    hex(const std::uint64_t hash)
+    {
+      char text[32];
+      std::snprintf(text, sizeof(text), "%016" PRIx64, hash);
+      return text;
+    }
+
     /** FNV-1a of the file's bytes: catches a truncated or damaged file. */
     std::uint64_t
     checksum(const std::string &file)
     {
       std::ifstream     input(file, std::ios::binary);
-      std::uint64_t     hash = 14695981039346656037ull;
+      std::uint64_t     hash = fnv_offset;
       std::vector<char> buffer(1 << 20);
       while (input)
         {
           input.read(buffer.data(), buffer.size());
-          const std::streamsize n = input.gcount();
-          for (std::streamsize i = 0; i < n; ++i)
-            {
-              hash ^= static_cast<unsigned char>(buffer[i]);
-              hash *= 1099511628211ull;
-            }
+          hash = fnv1a(hash, buffer.data(), input.gcount());
         }
       return hash;
+    }
+
+    /** The state text with its own checksum as the last line. */
+    std::string
+    sealed(const std::string &text)
+    {
+      return text + "checksum " +
+             hex(fnv1a(fnv_offset, text.data(), text.size())) + '\n';
+    }
+
+    /**
+     * The state text without its checksum line, after checking it: a byte
+     * flip that leaves valid numbers (a step, a time) is caught here.
+     */
+    std::string
+    unsealed(const std::string &text)
+    {
+      if (text.compare(0, magic_2.size() + 1, magic_2 + '\n') == 0)
+        return text;
+      if (text.compare(0, magic.size() + 1, magic + '\n') != 0)
+        throw std::runtime_error("'state' does not start with '" + magic + "'");
+      const std::string key    = "checksum ";
+      const std::size_t length = key.size() + 16 + 1;
+      if (text.size() <= length || text.back() != '\n' ||
+          text.compare(text.size() - length, key.size(), key) != 0 ||
+          text[text.size() - length - 1] != '\n')
+        throw std::runtime_error("'state' does not end with its checksum");
+      const std::size_t start = text.size() - length;
+      const std::string body  = text.substr(0, start);
+      if (text.substr(start + key.size(), 16) !=
+          hex(fnv1a(fnv_offset, body.data(), body.size())))
+        throw std::runtime_error(
+          "'state' is damaged (its checksum differs from the one recorded)");
+      return body;
     }
 
     /** "file NAME SIZE CHECKSUM" for each file but the state itself. */
@@ -63,10 +120,8 @@ namespace vefs
       for (const auto &name : names)
         {
           const std::string path = directory + "/" + name;
-          char              sum[32];
-          std::snprintf(sum, sizeof(sum), "%016" PRIx64, checksum(path));
-          lines << "file " << name << ' ' << fs::file_size(path) << ' ' << sum
-                << '\n';
+          lines << "file " << name << ' ' << fs::file_size(path) << ' '
+                << hex(checksum(path)) << '\n';
         }
       return lines.str();
     }
@@ -81,11 +136,13 @@ namespace vefs
       std::istringstream input(text);
       std::string        line;
       std::getline(input, line);
-      if (line != magic)
+      if (line != magic && line != magic_2)
         throw std::runtime_error("'state' does not start with '" + magic + "'");
       bool complete = false;
       while (std::getline(input, line))
         {
+          if (complete)
+            throw std::runtime_error("'state' has lines after its end");
           std::istringstream       words(line);
           std::string              key, word;
           std::vector<std::string> values;
@@ -139,9 +196,10 @@ namespace vefs
       std::ifstream input(directory + "/state", std::ios::binary);
       if (!input)
         throw std::runtime_error("'state' is missing");
-      std::ostringstream text;
-      text << input.rdbuf();
-      const Entries entries = parse_entries(text.str());
+      std::ostringstream whole;
+      whole << input.rdbuf();
+      const std::string text    = unsealed(whole.str());
+      const Entries     entries = parse_entries(text);
       if (entries.count("file") == 0)
         throw std::runtime_error("'state' lists no files");
       for (auto [it, end] = entries.equal_range("file"); it != end; ++it)
@@ -154,30 +212,76 @@ namespace vefs
           const auto        size = fs::file_size(path, error);
           if (error)
             throw std::runtime_error("'" + values[0] + "' is missing");
-          char sum[32];
-          std::snprintf(sum, sizeof(sum), "%016" PRIx64, checksum(path));
-          if (size != to_unsigned(values[1]) || values[2] != sum)
+          if (size != to_unsigned(values[1]) ||
+              values[2] != hex(checksum(path)))
             throw std::runtime_error("'" + values[0] +
                                      "' is damaged (its size or checksum "
                                      "differs from the one recorded)");
         }
-      return text.str();
+      return text;
     }
   } // namespace
 
   std::string
-  find_checkpoint(const std::string &output_directory)
+  find_checkpoint(const std::string &output_directory, const MPI_Comm comm)
   {
-    for (const std::string name :
-         {CheckpointNames::current, CheckpointNames::previous})
-      if (fs::exists(output_directory + "/" + name + "/state"))
-        return output_directory + "/" + name;
-    throw InputError("option --resume: no checkpoint in '" + output_directory +
-                     "' (expected '" + output_directory + "/" +
-                     CheckpointNames::current +
-                     "/'; it is written at the steps set by 'Checkpoint/"
-                     "Interval steps' and 'Interval minutes', and on SIGTERM "
-                     "or SIGINT)");
+    // Rank 0 reads; every rank gets its verdict.
+    std::string found, warning, problem;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        const std::string current =
+          output_directory + "/" + CheckpointNames::current;
+        const std::string previous =
+          output_directory + "/" + CheckpointNames::previous;
+        std::string damaged;
+        if (fs::exists(current))
+          try
+            {
+              read_and_verify(current);
+              found = current;
+            }
+          catch (const std::exception &error)
+            {
+              damaged =
+                "the checkpoint '" + current + "' is unusable: " + error.what();
+            }
+        // checkpoint.old/: the one before (README, "Checkpoint and
+        // restart"), or the only one if a kill fell between the renames.
+        if (found.empty() && fs::exists(previous))
+          try
+            {
+              read_and_verify(previous);
+              found = previous;
+              if (!damaged.empty())
+                warning =
+                  damaged + "; resumed from the one before, '" + previous + "'";
+            }
+          catch (const std::exception &error)
+            {
+              damaged += (damaged.empty() ? "" : "; ") +
+                         std::string("the checkpoint '") + previous +
+                         "' is unusable: " + error.what();
+            }
+        if (found.empty() && !damaged.empty())
+          problem = "option --resume: " + damaged +
+                    (fs::exists(previous) ? ""
+                                          : "; there is no earlier checkpoint "
+                                            "('" +
+                                              previous + "/') to fall back to");
+        else if (found.empty())
+          problem = "option --resume: no checkpoint in '" + output_directory +
+                    "' (expected '" + current +
+                    "/'; it is written at the steps set by 'Checkpoint/"
+                    "Interval steps' and 'Interval minutes', and on SIGTERM "
+                    "or SIGINT)";
+        if (!warning.empty())
+          std::cerr << "vefs: warning: option --resume: " << warning
+                    << std::endl;
+      }
+    problem = Utilities::MPI::broadcast(comm, problem, 0);
+    if (!problem.empty())
+      throw InputError(problem);
+    return Utilities::MPI::broadcast(comm, found, 0);
   }
 
   template <int dim>
@@ -271,21 +375,26 @@ namespace vefs
           text << file_lines(next) << "end\n";
           {
             std::ofstream file(next + "/state", std::ios::binary);
-            file << text.str();
+            file << sealed(text.str());
             file.close();
             if (!file)
               throw std::runtime_error("cannot write '" + next + "/state'");
           }
           // Two renames: between them checkpoint.old is the complete one.
+          // The one before stays as checkpoint.old: --resume falls back to
+          // it if the newest is damaged. Without a checkpoint/ (a kill
+          // between the renames, or the damaged one set aside on resume)
+          // checkpoint.old is the last good one and is kept.
           const std::string current =
             output_directory + "/" + CheckpointNames::current;
           const std::string previous =
             output_directory + "/" + CheckpointNames::previous;
-          fs::remove_all(previous);
           if (fs::exists(current))
-            fs::rename(current, previous);
+            {
+              fs::remove_all(previous);
+              fs::rename(current, previous);
+            }
           fs::rename(next, current);
-          fs::remove_all(previous);
         }
       catch (const std::exception &error)
         {
@@ -390,6 +499,21 @@ namespace vefs
     fields.level_set_gradient = loaded[1];
     fields.finalize();
     history.restored();
+    // Resumed from checkpoint.old/ because checkpoint/ is damaged: set the
+    // damaged one aside, so that the next checkpoint keeps the good one as
+    // checkpoint.old/.
+    const fs::path from(directory);
+    const fs::path damaged = from.parent_path() / CheckpointNames::current;
+    if (Utilities::MPI::this_mpi_process(comm) == 0 &&
+        from.filename() == CheckpointNames::previous && fs::exists(damaged))
+      {
+        const fs::path  aside = from.parent_path() / CheckpointNames::damaged;
+        std::error_code error;
+        fs::remove_all(aside, error);
+        fs::rename(damaged, aside, error);
+        if (error)
+          fs::remove_all(damaged, error);
+      }
     return state;
   }
 

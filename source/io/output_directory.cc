@@ -33,6 +33,7 @@ namespace vefs
              name == "solution.pvd" || name == CheckpointNames::current ||
              name == CheckpointNames::next ||
              name == CheckpointNames::previous ||
+             name == CheckpointNames::damaged ||
              (name.rfind("solution_", 0) == 0 &&
               (ends_with(".vtu") || ends_with(".pvtu")));
     }
@@ -60,6 +61,18 @@ namespace vefs
       return kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
     }
 
+    /** "process PID on host HOST", as the lock names it, or "". */
+    std::string
+    holder(const std::string &lock)
+    {
+      std::ifstream input(lock);
+      long          pid = 0;
+      std::string   host;
+      if (!(input >> pid >> host) || pid <= 0)
+        return "";
+      return "process " + std::to_string(pid) + " on host " + host;
+    }
+
     /** Rank 0's work; returns what went wrong, or nothing. */
     std::string
     prepare(const std::string &directory, const bool resume, bool &locked)
@@ -82,13 +95,20 @@ namespace vefs
           fs::remove(lock, error);
           file = std::fopen(lock.c_str(), "wx");
         }
+      if (file == nullptr && !fs::exists(lock))
+        return entry + "cannot write into '" + directory + "'";
       if (file == nullptr)
-        return entry + (fs::exists(lock)
-                          ? "'" + lock +
-                              "' exists: another run is writing into this "
-                              "directory (if none is, a run was killed: "
-                              "remove the file)"
-                          : "cannot write into '" + directory + "'");
+        {
+          // Say whose it is: the user can check that process.
+          const std::string who = holder(lock);
+          if (who.empty())
+            return entry + "'" + lock +
+                   "' exists: another run is writing into this directory "
+                   "(if none is, a run was killed: remove the file)";
+          return entry + "'" + lock + "' exists: the run of " + who +
+                 " is writing into this directory (if that process no "
+                 "longer runs, it was killed: remove the file)";
+        }
       // Who holds the lock: a later run can tell a killed one.
       std::fprintf(file,
                    "%ld %s\n",

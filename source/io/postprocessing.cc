@@ -3,6 +3,7 @@
 #include <vefs/io/postprocessing.h>
 #include <vefs/transport/free_surface.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -136,14 +137,15 @@ namespace vefs
   }
 
   template <int dim>
-  Tensor<1, dim>
+  Probe<dim>
   probe_velocity(const TransportedFields<dim> &fields,
                  const BoxMeshLocator<dim>    &locator,
                  const Point<dim>             &point)
   {
-    // Exactly one rank owns the cell the locator finds.
-    Tensor<1, dim> u;
-    const auto     cell = locator.locate(point);
+    // Exactly one rank owns the cell the locator finds. Components 0 to
+    // dim - 1: the velocity; dim: the level set.
+    std::array<double, dim + 1> values{};
+    const auto                  cell = locator.locate(point);
     if (cell->is_locally_owned())
       {
         const Point<dim> xi = BoxMeshLocator<dim>::unit_point(cell, point);
@@ -151,13 +153,24 @@ namespace vefs
         for (const unsigned int v : cell->vertex_indices())
           {
             const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
-            for (unsigned int d = 0; d < dim; ++d)
-              u[d] += weight * fields.fields(dof_cell->vertex_dof_index(v, d));
+            for (unsigned int d = 0; d <= dim; ++d)
+              values[d] +=
+                weight * fields.fields(dof_cell->vertex_dof_index(v, d));
           }
       }
-    return Utilities::MPI::sum(
-      u,
-      fields.dof_handler.get_triangulation().get_communicator());
+    // deal.II instantiates the sum of tensors of dimension up to 3 only.
+    MPI_Allreduce(MPI_IN_PLACE,
+                  values.data(),
+                  dim + 1,
+                  MPI_DOUBLE,
+                  MPI_SUM,
+                  fields.dof_handler.get_triangulation().get_communicator());
+    static_assert(TransportedFields<dim>::level_set_component == dim);
+    Probe<dim> probe;
+    for (unsigned int d = 0; d < dim; ++d)
+      probe.velocity[d] = values[d];
+    probe.in_liquid = values[dim] < 0;
+    return probe;
   }
 
   template void
@@ -174,11 +187,11 @@ namespace vefs
                   const double,
                   const double,
                   StepStatistics<3> &);
-  template Tensor<1, 2>
+  template Probe<2>
   probe_velocity<2>(const TransportedFields<2> &,
                     const BoxMeshLocator<2> &,
                     const Point<2> &);
-  template Tensor<1, 3>
+  template Probe<3>
   probe_velocity<3>(const TransportedFields<3> &,
                     const BoxMeshLocator<3> &,
                     const Point<3> &);

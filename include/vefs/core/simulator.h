@@ -142,7 +142,9 @@ namespace vefs
     CheckpointSchedule             checkpoints;
     std::unique_ptr<Function<dim>> exact_final_level_set;
     unsigned int last_output_step = numbers::invalid_unsigned_int;
-    Timer        wall_clock;
+    /** Whether the probe point was said to lie outside the liquid. */
+    bool  probe_outside_said = false;
+    Timer wall_clock;
     /** The wall time of the run before it was resumed. */
     double wall_time_offset = 0;
   };

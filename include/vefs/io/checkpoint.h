@@ -39,17 +39,22 @@ namespace vefs
     static constexpr const char *current = "checkpoint";
     /** Being written. */
     static constexpr const char *next = "checkpoint.new";
-    /** The one before, while the new one replaces it. */
+    /** The one before: kept, for a newest one that is damaged. */
     static constexpr const char *previous = "checkpoint.old";
+    /** A damaged checkpoint/ set aside by a resume from the one before. */
+    static constexpr const char *damaged = "checkpoint.damaged";
   };
 
   /**
-   * The complete checkpoint in @p output_directory: checkpoint/, or
-   * checkpoint.old/ if the run was killed between the two renames that
-   * replace it. Throws InputError if there is none. Rank 0's work.
+   * The intact checkpoint in @p output_directory, every file checked
+   * against the checksums of its state file: checkpoint/, else
+   * checkpoint.old/ (the one before, or the only one if the run was killed
+   * between the two renames that replace it; a warning on stderr says why
+   * checkpoint/ was passed over). Throws InputError, on all ranks of
+   * @p comm, if there is none. Collective.
    */
   std::string
-  find_checkpoint(const std::string &output_directory);
+  find_checkpoint(const std::string &output_directory, const MPI_Comm comm);
 
   /**
    * Write the mesh, the fields, the level set @p history, @p state and the

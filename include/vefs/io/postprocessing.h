@@ -11,9 +11,19 @@
 
 namespace vefs
 {
-  /** The velocity of @p fields at @p point, on every rank. */
+  /** What a probe point sees. */
   template <int dim>
-  Tensor<1, dim>
+  struct Probe
+  {
+    /** The velocity field there (outside the liquid: its extension). */
+    Tensor<1, dim> velocity;
+    /** Whether the level set puts the point in the liquid. */
+    bool in_liquid;
+  };
+
+  /** The velocity and the level set of @p fields at @p point, on every rank. */
+  template <int dim>
+  Probe<dim>
   probe_velocity(const TransportedFields<dim> &fields,
                  const BoxMeshLocator<dim>    &locator,
                  const Point<dim>             &point);
