@@ -153,7 +153,7 @@ namespace
     out << name
         << "write_checkpoint: " << (problem.empty() ? "no problem" : problem)
         << '\n';
-    const std::string found = vefs::find_checkpoint(directory);
+    const std::string found = vefs::find_checkpoint(directory, comm);
     out << name << "found: " << found << '\n';
 
     auto                         fresh_mesh = make_coarse_mesh<dim>();
