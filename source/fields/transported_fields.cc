@@ -3,6 +3,8 @@
 
 #include <vefs/fields/transported_fields.h>
 
+#include <cmath>
+
 namespace vefs
 {
   template <int dim>
@@ -43,7 +45,7 @@ namespace vefs
     constraints.close();
 
     initialize_vector(fields);
-    initialize_vector(level_set_gradient);
+    initialize_vector(gradient_of_level_set);
     localize_constraints();
 
     // FE_Q(1)^n_components: the i-th degree of freedom of a vertex belongs to
@@ -95,7 +97,7 @@ namespace vefs
             Point<dim>   plus = node.point, minus = node.point;
             plus[d] += step;
             minus[d] -= step;
-            level_set_gradient(node.dofs[d]) =
+            gradient_of_level_set(node.dofs[d]) =
               (level_set.value(plus) - level_set.value(minus)) / (2 * step);
           }
         if (has_stress())
@@ -120,12 +122,54 @@ namespace vefs
   void
   TransportedFields<dim>::finalize()
   {
-    for (VectorType *vector : {&fields, &level_set_gradient})
-      {
-        vector->update_ghost_values();
-        distribute_constraints(*vector);
-        vector->update_ghost_values();
-      }
+    make_consistent(fields);
+    make_consistent(gradient_of_level_set);
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::finalize_fields_only()
+  {
+    make_consistent(fields);
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::make_consistent(VectorType &vector) const
+  {
+    vector.update_ghost_values();
+    distribute_constraints(vector);
+    vector.update_ghost_values();
+  }
+
+  template <int dim>
+  bool
+  TransportedFields<dim>::owned_values_finite() const
+  {
+    bool finite = true;
+    for (unsigned int i = 0; i < fields.locally_owned_size(); ++i)
+      finite = finite && std::isfinite(fields.local_element(i));
+    return finite;
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::copy_to(VectorType &copy) const
+  {
+    // On the current layout: an assignment would keep an older one of the
+    // same local range.
+    copy.reinit(partitioner);
+    copy.copy_locally_owned_data_from(fields);
+    copy.update_ghost_values();
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::copy_level_set_gradient_to(VectorType &copy) const
+  {
+    copy.reinit(partitioner);
+    copy.copy_locally_owned_data_from(gradient_of_level_set);
+    copy.update_ghost_values();
   }
 
   template <int dim>

@@ -34,9 +34,7 @@ namespace vefs
       const bool is_cut =
         domain.location(cell) == LiquidDomain<dim>::Location::cut;
       for (const unsigned int v : cell->vertex_indices())
-        if (!is_cut || fields.fields(cell->vertex_dof_index(
-                         v,
-                         TransportedFields<dim>::level_set_component)) <= 0)
+        if (!is_cut || fields.level_set_at(cell, v) <= 0)
           include(cell->vertex(v));
       if (is_cut)
         {
@@ -91,9 +89,8 @@ namespace vefs
           widen_to_liquid(cell, fields, domain, lower, upper);
           for (const unsigned int v : cell->vertex_indices())
             {
-              for (unsigned int d = 0; d < dim; ++d)
-                vertex_u[v][d] = fields.fields(cell->vertex_dof_index(v, d));
-              max_speed = std::max(max_speed, vertex_u[v].norm());
+              vertex_u[v] = fields.velocity_at(cell, v);
+              max_speed   = std::max(max_speed, vertex_u[v].norm());
             }
           const BoxCellValues<dim> &values = liquid_values.reinit(cell);
           for (unsigned int q = 0; q < values.size(); ++q)
@@ -151,8 +148,9 @@ namespace vefs
         for (const unsigned int v : cell->vertex_indices())
           {
             const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
+            const Tensor<1, dim> u_v = fields.velocity_at(dof_cell, v);
             for (unsigned int d = 0; d < dim; ++d)
-              u[d] += weight * fields.fields(dof_cell->vertex_dof_index(v, d));
+              u[d] += weight * u_v[d];
           }
       }
     return Utilities::MPI::sum(
