@@ -176,29 +176,22 @@ namespace vefs
   void
   TransportedFields<dim>::localize_constraints()
   {
-    const auto &partitioner = *fields.get_partitioner();
-    constrained_entries.clear();
-    inhomogeneities.clear();
-    sources_start.assign(1, 0);
-    sources.clear();
-    bool local = true;
-    for (const auto &line : constraints.get_lines())
-      if (owned_dofs.is_element(line.index))
-        {
-          constrained_entries.push_back(
-            partitioner.global_to_local(line.index));
-          inhomogeneities.push_back(line.inhomogeneity);
-          for (const auto &[source, weight] : line.entries)
-            {
-              if (!partitioner.in_local_range(source) &&
-                  !partitioner.is_ghost_entry(source))
-                local = false;
-              else
-                sources.emplace_back(partitioner.global_to_local(source),
-                                     weight);
-            }
-          sources_start.push_back(sources.size());
-        }
+    const auto &partitioner = *this->partitioner;
+    const bool  local       = local_constraints.reinit(
+      constraints,
+      [&](const types::global_dof_index index, unsigned int &place) {
+        if (!owned_dofs.is_element(index))
+          return false;
+        place = partitioner.global_to_local(index);
+        return true;
+      },
+      [&](const types::global_dof_index index, unsigned int &place) {
+        if (!partitioner.in_local_range(index) &&
+            !partitioner.is_ghost_entry(index))
+          return false;
+        place = partitioner.global_to_local(index);
+        return true;
+      });
     constraints_are_local = !Utilities::MPI::logical_or(
       !local,
       dof_handler.get_triangulation().get_communicator());
@@ -219,14 +212,12 @@ namespace vefs
                fields.get_partitioner()->n_ghost_indices(),
            ExcMessage("A vector with the layout of the fields."));
     // Constraints are closed: no source is itself constrained, so the
-    // entries can be written in place, in the order deal.II sums them.
-    for (unsigned int k = 0; k < constrained_entries.size(); ++k)
-      {
-        double value = inhomogeneities[k];
-        for (unsigned int s = sources_start[k]; s < sources_start[k + 1]; ++s)
-          value += vector.local_element(sources[s].first) * sources[s].second;
-        vector.local_element(constrained_entries[k]) = value;
-      }
+    // entries can be written in place.
+    local_constraints.distribute(
+      [&](const unsigned int i) { return vector.local_element(i); },
+      [&](const unsigned int i, const double value) {
+        vector.local_element(i) = value;
+      });
   }
 
   template class TransportedFields<2>;

@@ -554,9 +554,7 @@ namespace vefs
       predicted(nodes[i].dofs[c]) =
         beyond_contact[i] > 0 ? std::max(at_feet[i][c], beyond_contact[i])
                               : at_feet[i][c];
-    predicted.update_ghost_values();
-    fields.distribute_constraints(predicted);
-    predicted.update_ghost_values();
+    fields.make_consistent(predicted);
     return predicted;
   }
 

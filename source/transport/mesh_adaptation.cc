@@ -374,9 +374,7 @@ namespace vefs
         if (surface_ahead)
           {
             surface_ahead->swap(transferred.back());
-            surface_ahead->update_ghost_values();
-            fields.distribute_constraints(*surface_ahead);
-            surface_ahead->update_ghost_values();
+            fields.make_consistent(*surface_ahead);
           }
         if (hermite_refinement)
           hermite_refinement->unpack(fields);

@@ -11,6 +11,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <vefs/compat/local_constraint_lines.h>
+
 #include <array>
 #include <vector>
 
@@ -338,6 +340,14 @@ namespace vefs
     void
     distribute_constraints(VectorType &vector) const;
 
+    /**
+     * Make the hanging nodes and ghost entries of @p vector, a vector with
+     * the layout of the fields whose owned entries are set, consistent:
+     * what finalize() does to the fields.
+     */
+    void
+    make_consistent(VectorType &vector) const;
+
     /** Vector with the layout of the fields, ghosted; all such vectors
      * share one MPI partitioner, made once per mesh. */
     void
@@ -371,10 +381,6 @@ namespace vefs
     std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
 
   private:
-    /** Make hanging nodes and ghost entries of @p vector consistent. */
-    void
-    make_consistent(VectorType &vector) const;
-
     /** The owned lines of @p constraints in local vector indices. */
     void
     localize_constraints();
@@ -388,11 +394,9 @@ namespace vefs
      * Whether every source of an owned constrained entry is owned or a ghost
      * (then distribute_constraints() uses the local lines below).
      */
-    bool                                         constraints_are_local = false;
-    std::vector<unsigned int>                    constrained_entries;
-    std::vector<double>                          inhomogeneities;
-    std::vector<unsigned int>                    sources_start;
-    std::vector<std::pair<unsigned int, double>> sources;
+    bool constraints_are_local = false;
+    /** The owned lines of @p constraints, by local vector indices. */
+    LocalConstraintLines<unsigned int> local_constraints;
   };
 } // namespace vefs
 
