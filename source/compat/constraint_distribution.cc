@@ -20,28 +20,20 @@ namespace vefs
                                  const BlockVector               &owned,
                                  const BlockVector               &ghosted)
   {
-    this->constraints = &constraints;
-    targets.clear();
-    inhomogeneities.clear();
-    entry_start.assign(1, 0);
-    entry_places.clear();
-    entry_weights.clear();
+    this->constraints            = &constraints;
     const IndexSet owned_indices = owned.locally_owned_elements();
-    complete                     = true;
-    for (const auto &line : constraints.get_lines())
-      if (owned_indices.is_element(line.index))
-        {
-          targets.push_back(place_of(owned, line.index));
-          inhomogeneities.push_back(line.inhomogeneity);
-          for (const auto &[index, weight] : line.entries)
-            {
-              const Place place = place_of(ghosted, index);
-              complete          = complete && place.local_index >= 0;
-              entry_places.push_back(place);
-              entry_weights.push_back(weight);
-            }
-          entry_start.push_back(entry_places.size());
-        }
+    complete                     = lines.reinit(
+      constraints,
+      [&](const types::global_dof_index index, Place &place) {
+        if (!owned_indices.is_element(index))
+          return false;
+        place = place_of(owned, index);
+        return true;
+      },
+      [&](const types::global_dof_index index, Place &place) {
+        place = place_of(ghosted, index);
+        return place.local_index >= 0;
+      });
     // The fallback is collective: every rank takes it if one must.
     complete =
       !Utilities::MPI::logical_or(!complete,
@@ -65,13 +57,10 @@ namespace vefs
         from[b] = ghosted.block(b).trilinos_vector()[0];
         to[b]   = owned.block(b).trilinos_vector()[0];
       }
-    for (unsigned int i = 0; i < targets.size(); ++i)
-      {
-        double value = inhomogeneities[i];
-        for (unsigned int e = entry_start[i]; e < entry_start[i + 1]; ++e)
-          value += entry_weights[e] *
-                   from[entry_places[e].block][entry_places[e].local_index];
-        to[targets[i].block][targets[i].local_index] = value;
-      }
+    lines.distribute(
+      [&](const Place &place) { return from[place.block][place.local_index]; },
+      [&](const Place &place, const double value) {
+        to[place.block][place.local_index] = value;
+      });
   }
 } // namespace vefs

@@ -33,11 +33,8 @@ namespace vefs
   bool
   fields_are_finite(const TransportedFields<dim> &fields)
   {
-    bool finite = true;
-    for (unsigned int i = 0; i < fields.fields.locally_owned_size(); ++i)
-      finite = finite && std::isfinite(fields.fields.local_element(i));
     return dealii::Utilities::MPI::min(
-             static_cast<unsigned int>(finite),
+             static_cast<unsigned int>(fields.owned_values_finite()),
              fields.dof_handler.get_triangulation().get_communicator()) == 1;
   }
 

@@ -3,6 +3,8 @@
 
 #include <vefs/fields/transported_fields.h>
 
+#include <cmath>
+
 namespace vefs
 {
   template <int dim>
@@ -43,7 +45,7 @@ namespace vefs
     constraints.close();
 
     initialize_vector(fields);
-    initialize_vector(level_set_gradient);
+    initialize_vector(gradient_of_level_set);
     localize_constraints();
 
     // FE_Q(1)^n_components: the i-th degree of freedom of a vertex belongs to
@@ -95,7 +97,7 @@ namespace vefs
             Point<dim>   plus = node.point, minus = node.point;
             plus[d] += step;
             minus[d] -= step;
-            level_set_gradient(node.dofs[d]) =
+            gradient_of_level_set(node.dofs[d]) =
               (level_set.value(plus) - level_set.value(minus)) / (2 * step);
           }
         if (has_stress())
@@ -120,41 +122,76 @@ namespace vefs
   void
   TransportedFields<dim>::finalize()
   {
-    for (VectorType *vector : {&fields, &level_set_gradient})
-      {
-        vector->update_ghost_values();
-        distribute_constraints(*vector);
-        vector->update_ghost_values();
-      }
+    make_consistent(fields);
+    make_consistent(gradient_of_level_set);
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::finalize_fields_only()
+  {
+    make_consistent(fields);
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::make_consistent(VectorType &vector) const
+  {
+    vector.update_ghost_values();
+    distribute_constraints(vector);
+    vector.update_ghost_values();
+  }
+
+  template <int dim>
+  bool
+  TransportedFields<dim>::owned_values_finite() const
+  {
+    bool finite = true;
+    for (unsigned int i = 0; i < fields.locally_owned_size(); ++i)
+      finite = finite && std::isfinite(fields.local_element(i));
+    return finite;
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::copy_to(VectorType &copy) const
+  {
+    // On the current layout: an assignment would keep an older one of the
+    // same local range.
+    copy.reinit(partitioner);
+    copy.copy_locally_owned_data_from(fields);
+    copy.update_ghost_values();
+  }
+
+  template <int dim>
+  void
+  TransportedFields<dim>::copy_level_set_gradient_to(VectorType &copy) const
+  {
+    copy.reinit(partitioner);
+    copy.copy_locally_owned_data_from(gradient_of_level_set);
+    copy.update_ghost_values();
   }
 
   template <int dim>
   void
   TransportedFields<dim>::localize_constraints()
   {
-    const auto &partitioner = *fields.get_partitioner();
-    constrained_entries.clear();
-    inhomogeneities.clear();
-    sources_start.assign(1, 0);
-    sources.clear();
-    bool local = true;
-    for (const auto &line : constraints.get_lines())
-      if (owned_dofs.is_element(line.index))
-        {
-          constrained_entries.push_back(
-            partitioner.global_to_local(line.index));
-          inhomogeneities.push_back(line.inhomogeneity);
-          for (const auto &[source, weight] : line.entries)
-            {
-              if (!partitioner.in_local_range(source) &&
-                  !partitioner.is_ghost_entry(source))
-                local = false;
-              else
-                sources.emplace_back(partitioner.global_to_local(source),
-                                     weight);
-            }
-          sources_start.push_back(sources.size());
-        }
+    const auto &partitioner = *this->partitioner;
+    const bool  local       = local_constraints.reinit(
+      constraints,
+      [&](const types::global_dof_index index, unsigned int &place) {
+        if (!owned_dofs.is_element(index))
+          return false;
+        place = partitioner.global_to_local(index);
+        return true;
+      },
+      [&](const types::global_dof_index index, unsigned int &place) {
+        if (!partitioner.in_local_range(index) &&
+            !partitioner.is_ghost_entry(index))
+          return false;
+        place = partitioner.global_to_local(index);
+        return true;
+      });
     constraints_are_local = !Utilities::MPI::logical_or(
       !local,
       dof_handler.get_triangulation().get_communicator());
@@ -175,14 +212,12 @@ namespace vefs
                fields.get_partitioner()->n_ghost_indices(),
            ExcMessage("A vector with the layout of the fields."));
     // Constraints are closed: no source is itself constrained, so the
-    // entries can be written in place, in the order deal.II sums them.
-    for (unsigned int k = 0; k < constrained_entries.size(); ++k)
-      {
-        double value = inhomogeneities[k];
-        for (unsigned int s = sources_start[k]; s < sources_start[k + 1]; ++s)
-          value += vector.local_element(sources[s].first) * sources[s].second;
-        vector.local_element(constrained_entries[k]) = value;
-      }
+    // entries can be written in place.
+    local_constraints.distribute(
+      [&](const unsigned int i) { return vector.local_element(i); },
+      [&](const unsigned int i, const double value) {
+        vector.local_element(i) = value;
+      });
   }
 
   template class TransportedFields<2>;

@@ -171,22 +171,23 @@ namespace vefs
     const double theta = rheology.implicit_weight();
     typename TransportedFields<dim>::VectorType blended_velocity;
     if (rheology.has_stress() && theta < 1)
-      {
-        fields.initialize_vector(blended_velocity);
-        blended_velocity = fields.fields;
-      }
+      fields.copy_to(blended_velocity);
     flow.copy_velocity_to(fields, known);
     if (rheology.has_stress())
       {
         TimerOutput::Scope scope(timer, "4 stress update");
+        // A copy: the stress update writes the fields it reads the
+        // velocity from (a vector of their layout, doc/code.md).
+        typename TransportedFields<dim>::VectorType new_velocity;
+        fields.copy_to(new_velocity);
         if (theta < 1)
           {
-            blended_velocity.sadd(1 - theta, theta, fields.fields);
+            blended_velocity.sadd(1 - theta, theta, new_velocity);
             blended_velocity.update_ghost_values();
           }
         const StressUpdateReport report =
           update_stress(fields,
-                        theta < 1 ? blended_velocity : fields.fields,
+                        theta < 1 ? blended_velocity : new_velocity,
                         domain,
                         rheology,
                         tau,

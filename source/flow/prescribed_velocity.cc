@@ -46,8 +46,7 @@ namespace vefs
     velocity->set_time(time);
     double speed = 0;
     for (const auto &node : fields.nodes())
-      if (fields.fields(
-            node.dofs[TransportedFields<dim>::level_set_component]) <= 0)
+      if (fields.level_set(node) <= 0)
         {
           Tensor<1, dim> u;
           for (unsigned int d = 0; d < dim; ++d)

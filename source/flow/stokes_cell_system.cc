@@ -275,18 +275,10 @@ namespace vefs
       grad_u_star.assign(n_q, Tensor<2, dim>());
     for (const unsigned int v : transport_cell->vertex_indices())
       {
-        Tensor<1, dim> u;
-        for (unsigned int d = 0; d < dim; ++d)
-          u[d] = fields.fields(transport_cell->vertex_dof_index(v, d));
-        SymmetricTensor<2, dim> sigma;
-        if (with_stress)
-          for (unsigned int c = 0;
-               c < TransportedFields<dim>::n_stress_components;
-               ++c)
-            sigma[SymmetricTensor<2, dim>::unrolled_to_component_indices(c)] =
-              fields.fields(transport_cell->vertex_dof_index(
-                v,
-                TransportedFields<dim>::first_stress_component + c));
+        const Tensor<1, dim>          u = fields.velocity_at(transport_cell, v);
+        const SymmetricTensor<2, dim> sigma =
+          with_stress ? fields.stress_at(transport_cell, v)
+                      : SymmetricTensor<2, dim>();
         for (unsigned int q = 0; q < n_q; ++q)
           {
             const double phi = values.shape[q][v];

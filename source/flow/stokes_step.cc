@@ -875,9 +875,10 @@ namespace vefs
               const auto first = transport_cell->vertex_dof_index(v, 0);
               if (!fields.owned_dofs.is_element(first))
                 continue;
+              Tensor<1, dim> u;
               for (unsigned int d = 0; d < dim; ++d)
-                fields.fields(transport_cell->vertex_dof_index(v, d)) =
-                  solution(cell->vertex_dof_index(v, d, liquid_index));
+                u[d] = solution(cell->vertex_dof_index(v, d, liquid_index));
+              fields.set_velocity_at(transport_cell, v, u);
               known(first) = 1;
             }
         }

@@ -321,8 +321,8 @@ namespace vefs
       // differently).
       // And the steps since the last remap of the level set.
       std::vector<const typename TransportedFields<dim>::VectorType *> vectors{
-        &fields.fields,
-        &fields.level_set_gradient};
+        &fields.vector(),
+        &fields.level_set_gradient_vector()};
       for (const auto *vector : history.vectors())
         vectors.push_back(vector);
       transfer.prepare_for_serialization(vectors);
@@ -495,8 +495,8 @@ namespace vefs
       SolutionTransfer<dim, typename TransportedFields<dim>::VectorType>
         transfer(fields.dof_handler);
     transfer.deserialize(targets);
-    fields.fields             = loaded[0];
-    fields.level_set_gradient = loaded[1];
+    fields.mutable_vector()                    = loaded[0];
+    fields.mutable_level_set_gradient_vector() = loaded[1];
     fields.finalize();
     history.restored();
     // Resumed from checkpoint.old/ because checkpoint/ is damaged: set the

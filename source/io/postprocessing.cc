@@ -35,9 +35,7 @@ namespace vefs
       const bool is_cut =
         domain.location(cell) == LiquidDomain<dim>::Location::cut;
       for (const unsigned int v : cell->vertex_indices())
-        if (!is_cut || fields.fields(cell->vertex_dof_index(
-                         v,
-                         TransportedFields<dim>::level_set_component)) <= 0)
+        if (!is_cut || fields.level_set_at(cell, v) <= 0)
           include(cell->vertex(v));
       if (is_cut)
         {
@@ -92,9 +90,8 @@ namespace vefs
           widen_to_liquid(cell, fields, domain, lower, upper);
           for (const unsigned int v : cell->vertex_indices())
             {
-              for (unsigned int d = 0; d < dim; ++d)
-                vertex_u[v][d] = fields.fields(cell->vertex_dof_index(v, d));
-              max_speed = std::max(max_speed, vertex_u[v].norm());
+              vertex_u[v] = fields.velocity_at(cell, v);
+              max_speed   = std::max(max_speed, vertex_u[v].norm());
             }
           const BoxCellValues<dim> &values = liquid_values.reinit(cell);
           for (unsigned int q = 0; q < values.size(); ++q)
@@ -154,8 +151,7 @@ namespace vefs
           {
             const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
             for (unsigned int d = 0; d <= dim; ++d)
-              values[d] +=
-                weight * fields.fields(dof_cell->vertex_dof_index(v, d));
+              values[d] += weight * fields.value_at(dof_cell, v, d);
           }
       }
     // deal.II instantiates the sum of tensors of dimension up to 3 only.

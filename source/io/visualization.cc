@@ -109,16 +109,16 @@ namespace vefs
             DataComponentInterpretation::component_is_scalar);
         }
     data_out.add_data_vector(fields.dof_handler,
-                             fields.fields,
+                             fields.vector(),
                              names,
                              field_interpretation);
 
     const LiquidIndicator<dim> phi;
-    data_out.add_data_vector(fields.dof_handler, fields.fields, phi);
+    data_out.add_data_vector(fields.dof_handler, fields.vector(), phi);
     const FirstNormalStressDifference<dim> first_normal_stress_difference;
     if (fields.has_stress())
       data_out.add_data_vector(fields.dof_handler,
-                               fields.fields,
+                               fields.vector(),
                                first_normal_stress_difference);
 
     if (flow.n_dofs() > 0)

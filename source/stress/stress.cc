@@ -102,18 +102,12 @@ namespace vefs
       const Rheology<dim>                               &rheology,
       const typename TransportedFields<dim>::VectorType &updated)
     {
-      constexpr unsigned int first =
-        TransportedFields<dim>::first_stress_component;
       constexpr unsigned int n_stress =
         TransportedFields<dim>::n_stress_components;
-      constexpr unsigned int level_set =
-        TransportedFields<dim>::level_set_component;
-      const auto conformation_trace = [&](const auto &dofs_of) {
-        SymmetricTensor<2, dim> sigma;
-        for (unsigned int i = 0; i < n_stress; ++i)
-          sigma.access_raw_entry(i) = fields.fields(dofs_of(first + i));
-        return trace(rheology.conformation(sigma));
-      };
+      const auto conformation_trace =
+        [&](const SymmetricTensor<2, dim> &sigma) {
+          return trace(rheology.conformation(sigma));
+        };
 
       typename TransportedFields<dim>::VectorType largest;
       fields.initialize_vector(largest);
@@ -122,12 +116,10 @@ namespace vefs
           {
             double in_liquid = 0;
             for (const unsigned int v : cell->vertex_indices())
-              if (fields.fields(cell->vertex_dof_index(v, level_set)) <= 0)
+              if (fields.level_set_at(cell, v) <= 0)
                 in_liquid =
                   std::max(in_liquid,
-                           conformation_trace([&](const unsigned int c) {
-                             return cell->vertex_dof_index(v, c);
-                           }));
+                           conformation_trace(fields.stress_at(cell, v)));
             for (const unsigned int v : cell->vertex_indices())
               {
                 double &entry = largest(cell->vertex_dof_index(v, 0));
@@ -137,20 +129,20 @@ namespace vefs
       largest.compress(VectorOperation::max);
 
       for (const auto &node : fields.nodes())
-        if (updated(node.dofs[0]) > 0 &&
-            fields.fields(node.dofs[level_set]) > 0 &&
+        if (updated(node.dofs[0]) > 0 && fields.level_set(node) > 0 &&
             largest(node.dofs[0]) > 0)
           {
-            const double now = conformation_trace(
-              [&](const unsigned int c) { return node.dofs[c]; });
-            const double bound =
+            SymmetricTensor<2, dim> sigma = fields.stress(node);
+            const double            now   = conformation_trace(sigma);
+            const double            bound =
               dim + stretch_bound_factor *
                       std::max<double>(largest(node.dofs[0]) - dim, 0.);
             if (now > bound)
               {
                 const double s = (bound - dim) / (now - dim);
                 for (unsigned int i = 0; i < n_stress; ++i)
-                  fields.fields(node.dofs[first + i]) *= s;
+                  sigma.access_raw_entry(i) *= s;
+                fields.set_stress(node, sigma);
               }
           }
       fields.finalize();
@@ -244,10 +236,8 @@ namespace vefs
           const double weight = cell->measure();
           for (const unsigned int v : cell->vertex_indices())
             {
-              SymmetricTensor<2, dim> advected;
-              for (unsigned int i = 0; i < n_stress; ++i)
-                advected.access_raw_entry(i) =
-                  fields.fields(cell->vertex_dof_index(v, first + i));
+              const SymmetricTensor<2, dim> advected =
+                fields.stress_at(cell, v);
               const Tensor<2, dim>          L = traceless(grad_u[v]);
               const SymmetricTensor<2, dim> updated =
                 rheology.updated_stress(advected, L, tau);
@@ -267,9 +257,12 @@ namespace vefs
       {
         const double weight = sum(node.dofs[0]);
         if (weight > 0)
-          for (unsigned int i = 0; i < n_stress; ++i)
-            fields.fields(node.dofs[first + i]) =
-              sum(node.dofs[first + i]) / weight;
+          {
+            SymmetricTensor<2, dim> sigma;
+            for (unsigned int i = 0; i < n_stress; ++i)
+              sigma.access_raw_entry(i) = sum(node.dofs[first + i]) / weight;
+            fields.set_stress(node, sigma);
+          }
       }
     fields.finalize();
     if (!outside_extended)
@@ -300,14 +293,7 @@ namespace vefs
       if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
           for (const unsigned int v : cell->vertex_indices())
-            for (unsigned int c = 0;
-                 c < TransportedFields<dim>::n_stress_components;
-                 ++c)
-              vertex_sigma
-                [v][SymmetricTensor<2, dim>::unrolled_to_component_indices(c)] =
-                  fields.fields(cell->vertex_dof_index(
-                    v,
-                    TransportedFields<dim>::first_stress_component + c));
+            vertex_sigma[v] = fields.stress_at(cell, v);
           const BoxCellValues<dim> &values = liquid_values.reinit(cell);
           for (unsigned int q = 0; q < values.size(); ++q)
             {

@@ -35,6 +35,11 @@ namespace vefs
        */
       const std::array<typename TransportedFields<dim>::VectorType, dim>
         *velocity_gradient = nullptr;
+      /**
+       * The detail of the cells the last mesh change coarsened, if not null:
+       * Q1 in the former child there.
+       */
+      const CoarsenedDetail<dim> *coarsened_detail = nullptr;
       /** The velocity by this Hermite interpolation, if not null. */
       const FieldHermite<dim> *velocity_hermite = nullptr;
       bool                     velocity_limited = false;
@@ -62,16 +67,17 @@ namespace vefs
         TransportedFields<dim>::level_set_component;
       FieldValues<dim> values;
       const auto       dof_cell = fields.cell_of(cell);
-      if (const double *lattice = fields.coarsened_detail.lattice(cell))
+      if (const double *lattice = how.coarsened_detail
+                                    ? how.coarsened_detail->lattice(cell)
+                                    : nullptr)
         // Coarsened before this advection: Q1 in the former child.
-        fields.coarsened_detail.add_values(lattice, xi, &values[0]);
+        how.coarsened_detail->add_values(lattice, xi, &values[0]);
       else
         for (const unsigned int v : cell->vertex_indices())
           {
             const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
             for (unsigned int c = 0; c < fields.n_components; ++c)
-              values[c] +=
-                weight * fields.fields(dof_cell->vertex_dof_index(v, c));
+              values[c] += weight * fields.value_at(dof_cell, v, c);
           }
       if (how.velocity_gradient)
         for (const unsigned int v : cell->vertex_indices())
@@ -273,10 +279,12 @@ namespace vefs
       std::vector<Tensor<1, dim>>   &k,
       std::vector<Tensor<2, dim>>   &dk,
       std::vector<Point<dim>>       &feet,
-      std::vector<Tensor<2, dim>>   &jacobians)
+      std::vector<Tensor<2, dim>>   &jacobians,
+      const CoarsenedDetail<dim>    *coarsened_detail)
     {
       Interpolation<dim> at_stage;
       at_stage.velocity_gradient    = &velocity_gradient;
+      at_stage.coarsened_detail     = coarsened_detail;
       const Tensor<2, dim> identity = unit_symmetric_tensor<dim>();
 
       feet.resize(starts.size());
@@ -344,15 +352,18 @@ namespace vefs
     std::vector<Point<dim>>
     midpoint_feet(const TransportedFields<dim> &fields,
                   const double                  tau,
-                  const BoxMeshLocator<dim>    &locator)
+                  const BoxMeshLocator<dim>    &locator,
+                  const CoarsenedDetail<dim>   *coarsened_detail)
     {
       const auto             &nodes = fields.nodes();
       std::vector<Point<dim>> points(nodes.size());
       for (unsigned int i = 0; i < nodes.size(); ++i)
         points[i] = locator.fold_into_cavity(
           nodes[i].point - 0.5 * tau * fields.velocity(nodes[i]));
+      Interpolation<dim> at_midpoint;
+      at_midpoint.coarsened_detail = coarsened_detail;
       const auto at_midpoints =
-        evaluate_at(points, fields, locator, Interpolation<dim>());
+        evaluate_at(points, fields, locator, at_midpoint);
       for (unsigned int i = 0; i < nodes.size(); ++i)
         {
           Tensor<1, dim> u;
@@ -366,10 +377,11 @@ namespace vefs
 
   template <int dim>
   void
-  advect_along_characteristics(TransportedFields<dim>    &fields,
-                               const double               tau,
-                               const BoxMeshLocator<dim> &locator,
-                               const FootInterpolation   &interpolation)
+  advect_along_characteristics(TransportedFields<dim>     &fields,
+                               const double                tau,
+                               const BoxMeshLocator<dim>  &locator,
+                               const FootInterpolation    &interpolation,
+                               const CoarsenedDetail<dim> *coarsened_detail)
   {
     const auto &nodes = fields.nodes();
 
@@ -381,7 +393,7 @@ namespace vefs
     std::vector<Point<dim>>     feet(nodes.size());
     std::vector<Tensor<2, dim>> jacobians;
     if (!gradient_augmented)
-      feet = midpoint_feet(fields, tau, locator);
+      feet = midpoint_feet(fields, tau, locator, coarsened_detail);
     else
       {
         // Four-stage trace, with J = dX/dx for the gradient.
@@ -404,7 +416,8 @@ namespace vefs
                               k,
                               dk,
                               feet,
-                              jacobians);
+                              jacobians,
+                              coarsened_detail);
       }
 
     std::vector<double> beyond_contact(nodes.size());
@@ -417,6 +430,7 @@ namespace vefs
     FieldHermite<dim> hermite;
     auto              how =
       level_set_interpolation(fields, interpolation.level_set, hermite);
+    how.coarsened_detail = coarsened_detail;
     std::vector<unsigned int> cubic_components;
     if (interpolation.velocity != VelocityInterpolation::linear)
       {
@@ -449,7 +463,7 @@ namespace vefs
 
     for (unsigned int i = 0; i < nodes.size(); ++i)
       for (unsigned int c = 0; c < fields.n_components; ++c)
-        fields.fields(nodes[i].dofs[c]) = at_feet[i][c];
+        fields.set_value(nodes[i], c, at_feet[i][c]);
 
     if (gradient_augmented)
       for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -459,9 +473,7 @@ namespace vefs
           Tensor<1, dim>        old_gradient;
           for (unsigned int d = 0; d < dim; ++d)
             old_gradient[d] = at_feet[i][first_extra<dim> + d];
-          const Tensor<1, dim> new_gradient = old_gradient * J;
-          for (unsigned int d = 0; d < dim; ++d)
-            fields.level_set_gradient(nodes[i].dofs[d]) = new_gradient[d];
+          fields.set_level_set_gradient(nodes[i], old_gradient * J);
         }
     fields.finalize();
   }
@@ -499,7 +511,8 @@ namespace vefs
                           k,
                           dk,
                           feet,
-                          step_jacobians);
+                          step_jacobians,
+                          nullptr);
     for (unsigned int i = 0; i < points.size(); ++i)
       {
         beyond_contact[i] =
@@ -520,8 +533,9 @@ namespace vefs
   {
     constexpr unsigned int  c     = TransportedFields<dim>::level_set_component;
     const auto             &nodes = fields.nodes();
-    std::vector<Point<dim>> feet  = midpoint_feet(fields, tau, locator);
-    std::vector<double>     beyond_contact(nodes.size());
+    std::vector<Point<dim>> feet =
+      midpoint_feet<dim>(fields, tau, locator, nullptr);
+    std::vector<double> beyond_contact(nodes.size());
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
         beyond_contact[i] = locator.distance_beyond_contact_walls(feet[i]);
@@ -540,9 +554,7 @@ namespace vefs
       predicted(nodes[i].dofs[c]) =
         beyond_contact[i] > 0 ? std::max(at_feet[i][c], beyond_contact[i])
                               : at_feet[i][c];
-    predicted.update_ghost_values();
-    fields.distribute_constraints(predicted);
-    predicted.update_ghost_values();
+    fields.make_consistent(predicted);
     return predicted;
   }
 
@@ -599,10 +611,12 @@ namespace vefs
   advect_along_characteristics<2>(TransportedFields<2> &,
                                   const double,
                                   const BoxMeshLocator<2> &,
-                                  const FootInterpolation &);
+                                  const FootInterpolation &,
+                                  const CoarsenedDetail<2> *);
   template void
   advect_along_characteristics<3>(TransportedFields<3> &,
                                   const double,
                                   const BoxMeshLocator<3> &,
-                                  const FootInterpolation &);
+                                  const FootInterpolation &,
+                                  const CoarsenedDetail<3> *);
 } // namespace vefs

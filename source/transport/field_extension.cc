@@ -18,7 +18,7 @@ namespace vefs
                       const unsigned int            n_components)
         : n_components(n_components)
       {
-        const auto        &partitioner = *fields.fields.get_partitioner();
+        const auto        &partitioner = *fields.partitioner;
         const unsigned int n_local =
           partitioner.locally_owned_size() + partitioner.n_ghost_indices();
         std::vector<unsigned int> vertex_of_local(
@@ -95,8 +95,8 @@ namespace vefs
     for (const auto &node : fields.nodes())
       if (known(node.dofs[0]) == 0)
         for (const unsigned int c : components)
-          fields.fields(node.dofs[c]) = 0;
-    fields.fields.update_ghost_values();
+          fields.set_value(node, c, 0);
+    fields.update_ghost_values();
     known.update_ghost_values();
 
     const CellVertexGraph<dim> graph(fields, fields.n_components);
@@ -138,8 +138,7 @@ namespace vefs
                 {
                   ++n_known;
                   for (const unsigned int c : components)
-                    average[c] +=
-                      fields.fields.local_element(graph.dof(vertices[v], c));
+                    average[c] += fields.local_value(graph.dof(vertices[v], c));
                 }
             average /= n_known;
             for (unsigned int v = 0; v < n_v; ++v)
@@ -157,14 +156,12 @@ namespace vefs
           if (known(node.dofs[0]) == 0 && count(node.dofs[0]) > 0)
             {
               for (const unsigned int c : components)
-                fields.fields(node.dofs[c]) =
-                  sum(node.dofs[c]) / count(node.dofs[0]);
+                fields.set_value(node,
+                                 c,
+                                 sum(node.dofs[c]) / count(node.dofs[0]));
               known(node.dofs[0]) = 1;
             }
-        // Only the fields changed: the level set gradient stays as it is.
-        fields.fields.update_ghost_values();
-        fields.distribute_constraints(fields.fields);
-        fields.fields.update_ghost_values();
+        fields.finalize_fields_only();
         known.update_ghost_values();
 
         // The next front: the cells of this one and those around the
@@ -232,8 +229,7 @@ namespace vefs
     typename TransportedFields<dim>::VectorType &known)
   {
     for (const auto &node : fields.nodes())
-      if (fields.fields(
-            node.dofs[TransportedFields<dim>::level_set_component]) > 0)
+      if (fields.level_set(node) > 0)
         known(node.dofs[0]) = 0;
     known.update_ghost_values();
   }

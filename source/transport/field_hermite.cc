@@ -87,11 +87,14 @@ namespace vefs
           for (const unsigned int v : cell->vertex_indices())
             {
               dofs[v]      = cell->vertex_dof_index(v, c);
-              values[0][v] = fields.fields(dofs[v]);
+              values[0][v] = fields.value_at(cell, v, c);
               if (advected_gradient)
-                for (unsigned int d = 0; d < dim; ++d)
-                  values[1 + d][v] =
-                    fields.level_set_gradient(cell->vertex_dof_index(v, d));
+                {
+                  const Tensor<1, dim> gradient =
+                    fields.level_set_gradient_at(cell, v);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    values[1 + d][v] = gradient[d];
+                }
             }
           const Tensor<1, dim> h = extents<dim>(cell);
           for (const unsigned int v : cell->vertex_indices())
@@ -155,7 +158,7 @@ namespace vefs
               for (const unsigned int v : cell->vertex_indices())
                 {
                   dofs[v]   = cell->vertex_dof_index(v, c);
-                  values[v] = fields.fields(dofs[v]);
+                  values[v] = fields.value_at(cell, v, c);
                 }
               for (const unsigned int v : cell->vertex_indices())
                 {
@@ -237,7 +240,7 @@ namespace vefs
     for (const unsigned int v : cell->vertex_indices())
       {
         const auto   dof = cell->vertex_dof_index(v, c);
-        const double f_v = fields.fields(dof);
+        const double f_v = fields.value_at(cell, v, c);
         lower            = std::min(lower, f_v);
         upper            = std::max(upper, f_v);
         for (unsigned int s = 0; s <= n_derivatives; ++s)

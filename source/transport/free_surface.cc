@@ -58,9 +58,7 @@ namespace vefs
         double       highest = -lowest;
         for (const unsigned int v : cell->vertex_indices())
           {
-            const double value = fields.fields(cell->vertex_dof_index(
-              v,
-              TransportedFields<dim>::level_set_component));
+            const double value = fields.level_set_at(cell, v);
             lowest             = std::min(lowest, value);
             highest            = std::max(highest, value);
           }
@@ -74,8 +72,8 @@ namespace vefs
         fe_values.reinit(cell);
         const FEValuesExtractors::Scalar level_set(
           TransportedFields<dim>::level_set_component);
-        fe_values[level_set].get_function_values(fields.fields, psi);
-        fe_values[level_set].get_function_gradients(fields.fields, grad_psi);
+        fe_values[level_set].get_function_values(fields.vector(), psi);
+        fe_values[level_set].get_function_gradients(fields.vector(), grad_psi);
         double liquid = 0;
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
@@ -115,8 +113,7 @@ namespace vefs
       }
 
     for (const auto &node : fields.nodes())
-      fields.fields(node.dofs[TransportedFields<dim>::level_set_component]) +=
-        shift;
+      fields.set_level_set(node, fields.level_set(node) + shift);
     fields.finalize();
     return shift;
   }
@@ -144,13 +141,13 @@ namespace vefs
           const double exact_center = exact_level_set.value(cell->center());
           bool uniform = std::abs(exact_center) > 0.51 * cell->diameter();
           for (const unsigned int v : cell->vertex_indices())
-            uniform = uniform && ((fields.fields(cell->vertex_dof_index(v, c)) <
-                                   0) == (exact_center < 0));
+            uniform = uniform && ((fields.level_set_at(cell, v) < 0) ==
+                                  (exact_center < 0));
           if (uniform)
             continue;
           fe_values.reinit(cell);
           fe_values[FEValuesExtractors::Scalar(c)]
-            .get_function_values(fields.fields, psi);
+            .get_function_values(fields.vector(), psi);
           for (const unsigned int q : fe_values.quadrature_point_indices())
             if ((psi[q] < 0) !=
                 (exact_level_set.value(fe_values.quadrature_point(q)) < 0))
@@ -190,13 +187,12 @@ namespace vefs
                         const unsigned int            coordinate,
                         const double                  value_if_dry)
   {
-    constexpr unsigned int c      = TransportedFields<dim>::level_set_component;
-    double                 extent = -std::numeric_limits<double>::max();
-    auto                   visit_edge = [&](const auto &edge) {
-      const double     psi_a = fields.fields(edge->vertex_dof_index(0, c));
-      const double     psi_b = fields.fields(edge->vertex_dof_index(1, c));
-      const Point<dim> a = edge->vertex(0);
-      const Point<dim> b = edge->vertex(1);
+    double extent     = -std::numeric_limits<double>::max();
+    auto   visit_edge = [&](const auto &edge) {
+      const double     psi_a = fields.level_set_at(edge, 0);
+      const double     psi_b = fields.level_set_at(edge, 1);
+      const Point<dim> a     = edge->vertex(0);
+      const Point<dim> b     = edge->vertex(1);
       if (psi_a <= 0)
         extent = std::max(extent, a[coordinate]);
       if (psi_b <= 0)

@@ -10,29 +10,45 @@ namespace vefs
   namespace
   {
     /**
-     * Lends @p vector to @p slot of the fields for as long as it lives, so
-     * that the fields' own interpolation reads it: the kept vectors have
-     * the fields' layout, on the same mesh.
+     * Lends @p vector to the fields (as their vector, or as their level set
+     * gradient if @p gradient) for as long as it lives, so that the fields'
+     * own interpolation reads it: the kept vectors have the fields' layout,
+     * on the same mesh.
      */
-    template <typename VectorType>
+    template <int dim>
     class Lent
     {
     public:
-      Lent(VectorType &slot, VectorType &vector)
-        : slot(slot)
+      using VectorType = typename TransportedFields<dim>::VectorType;
+
+      Lent(TransportedFields<dim> &fields,
+           VectorType             &vector,
+           const bool              gradient = false)
+        : fields(fields)
         , vector(vector)
+        , gradient(gradient)
       {
-        slot.swap(vector);
+        swap();
       }
 
       ~Lent()
       {
-        slot.swap(vector);
+        swap();
       }
 
     private:
-      VectorType &slot;
-      VectorType &vector;
+      void
+      swap()
+      {
+        if (gradient)
+          fields.swap_level_set_gradient(vector);
+        else
+          fields.swap(vector);
+      }
+
+      TransportedFields<dim> &fields;
+      VectorType             &vector;
+      const bool              gradient;
     };
   } // namespace
 
@@ -49,10 +65,11 @@ namespace vefs
   {
     if (!has_base)
       return;
-    steps.push_back(
-      Step{fields.fields, recover_nodal_gradients(fields, dim), tau});
-    // A copy holds the locally owned values only.
-    steps.back().velocity.update_ghost_values();
+    Step step;
+    fields.copy_to(step.velocity);
+    step.velocity_gradient = recover_nodal_gradients(fields, dim);
+    step.tau               = tau;
+    steps.push_back(std::move(step));
   }
 
   template <int dim>
@@ -75,7 +92,7 @@ namespace vefs
       points[i] = nodes[i].point;
     for (auto step = steps.rbegin(); step != steps.rend(); ++step)
       {
-        const Lent velocity(fields.fields, step->velocity);
+        const Lent<dim> velocity(fields, step->velocity);
         trace_back<dim>(fields,
                         step->velocity_gradient,
                         step->tau,
@@ -87,25 +104,22 @@ namespace vefs
 
     std::vector<std::pair<double, Tensor<1, dim>>> at_feet;
     {
-      const Lent level_set(fields.fields, base_level_set);
-      const Lent gradient(fields.level_set_gradient, base_gradient);
+      const Lent<dim> level_set(fields, base_level_set);
+      const Lent<dim> gradient(fields, base_gradient, true);
       at_feet = level_set_at<dim>(fields, points, locator, interpolation);
     }
 
-    constexpr unsigned int psi = TransportedFields<dim>::level_set_component;
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
         // Liquid that left a contact wall left empty space behind.
-        fields.fields(nodes[i].dofs[psi]) =
-          beyond_contact[i] > 0 ? std::max(at_feet[i].first, beyond_contact[i])
-                                : at_feet[i].first;
+        fields.set_level_set(nodes[i],
+                             beyond_contact[i] > 0
+                               ? std::max(at_feet[i].first, beyond_contact[i])
+                               : at_feet[i].first);
+        // grad psi^n(x) = J^T grad psi^m(X(x)).
         if (gradient_augmented)
-          {
-            // grad psi^n(x) = J^T grad psi^m(X(x)).
-            const Tensor<1, dim> gradient = at_feet[i].second * jacobians[i];
-            for (unsigned int d = 0; d < dim; ++d)
-              fields.level_set_gradient(nodes[i].dofs[d]) = gradient[d];
-          }
+          fields.set_level_set_gradient(nodes[i],
+                                        at_feet[i].second * jacobians[i]);
       }
     fields.finalize();
   }
@@ -132,16 +146,8 @@ namespace vefs
   {
     if (!enabled())
       return;
-    // On the layout of the current mesh: an assignment would keep an older
-    // one of the same local range.
-    for (auto [base, current] :
-         {std::make_pair(&base_level_set, &fields.fields),
-          std::make_pair(&base_gradient, &fields.level_set_gradient)})
-      {
-        base->reinit(current->get_partitioner());
-        base->copy_locally_owned_data_from(*current);
-        base->update_ghost_values();
-      }
+    fields.copy_to(base_level_set);
+    fields.copy_level_set_gradient_to(base_gradient);
     steps.clear();
     moved    = 0;
     has_base = true;
@@ -154,10 +160,9 @@ namespace vefs
   {
     if (!has_base)
       return;
-    const Lent level_set(fields.fields, base_level_set);
+    const Lent<dim> level_set(fields, base_level_set);
     for (const auto &node : fields.nodes())
-      fields.fields(node.dofs[TransportedFields<dim>::level_set_component]) +=
-        shift;
+      fields.set_level_set(node, fields.level_set(node) + shift);
     fields.finalize();
   }
 

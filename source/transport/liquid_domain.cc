@@ -115,12 +115,9 @@ namespace vefs
         double highest = -lowest;
         for (const unsigned int v : cell->vertex_indices())
           {
-            values[v] = fields.fields(cell->vertex_dof_index(
-                          v,
-                          TransportedFields<dim>::level_set_component)) +
-                        shift;
-            lowest  = std::min(lowest, values[v]);
-            highest = std::max(highest, values[v]);
+            values[v] = fields.level_set_at(cell, v) + shift;
+            lowest    = std::min(lowest, values[v]);
+            highest   = std::max(highest, values[v]);
           }
         // A Q1 function takes its extremes at the vertices.
         if (!(lowest < 0))

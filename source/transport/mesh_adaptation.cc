@@ -207,13 +207,13 @@ namespace vefs
                       &values[(dim + 1) *
                               CoarsenedDetail<dim>::lattice_point(child, v)];
                     write_if_owned(
-                      fields.fields,
+                      fields.mutable_vector(),
                       cell->vertex_dof_index(
                         v,
                         TransportedFields<dim>::level_set_component),
                       point_values[0]);
                     for (unsigned int d = 0; d < dim; ++d)
-                      write_if_owned(fields.level_set_gradient,
+                      write_if_owned(fields.mutable_level_set_gradient_vector(),
                                      cell->vertex_dof_index(v, d),
                                      point_values[1 + d]);
                   }
@@ -269,8 +269,11 @@ namespace vefs
              const unsigned int                           max_cycles,
              const LevelSetInterpolation                  interpolation,
              typename TransportedFields<dim>::VectorType *surface_ahead,
-             const PresentBand                            present_band)
+             const PresentBand                            present_band,
+             CoarsenedDetail<dim>                        *coarsened_detail)
   {
+    Assert(present_band == PresentBand::kept || coarsened_detail,
+           ExcMessage("A coarsened band keeps its detail."));
     constexpr unsigned int c = TransportedFields<dim>::level_set_component;
     bool                   changed = false;
     for (unsigned int cycle = 0; cycle < max_cycles; ++cycle)
@@ -278,7 +281,7 @@ namespace vefs
         for (const auto &cell : fields.dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              const auto present = cell_level_set<dim>(fields.fields, cell);
+              const auto present = cell_level_set<dim>(fields.vector(), cell);
               std::pair<unsigned int, unsigned int> allowed;
               double                                lowest = present.lowest;
               if (!surface_ahead)
@@ -287,7 +290,7 @@ namespace vefs
                 {
                   const auto ahead = cell_level_set<dim>(*surface_ahead, cell);
                   const double motion =
-                    local_motion<dim>(fields.fields, *surface_ahead, cell);
+                    local_motion<dim>(fields.vector(), *surface_ahead, cell);
                   allowed = present_band == PresentBand::kept
                               ? levels.allowed_levels(present, ahead, motion)
                               : levels.allowed_levels(ahead, motion);
@@ -332,9 +335,9 @@ namespace vefs
         std::vector<unsigned int> gradient(dim);
         std::iota(gradient.begin(), gradient.end(), 0);
         std::vector<typename Transfer::Slot> slots = {
-          {&fields.fields, all_fields}};
+          {&fields.vector(), all_fields}};
         if (with_gradient)
-          slots.push_back({&fields.level_set_gradient, gradient});
+          slots.push_back({&fields.level_set_gradient_vector(), gradient});
         if (surface_ahead)
           slots.push_back({surface_ahead, {c}});
         Transfer transfer(triangulation, fields, slots);
@@ -345,10 +348,10 @@ namespace vefs
                                                      fields,
                                                      interpolation);
         if (present_band != PresentBand::kept)
-          fields.coarsened_detail.attach(triangulation,
-                                         fields.dof_handler,
-                                         fields.fields,
-                                         fields.n_components);
+          coarsened_detail->attach(triangulation,
+                                   fields.dof_handler,
+                                   fields.vector(),
+                                   fields.n_components);
         triangulation.execute_coarsening_and_refinement();
 
         fields.setup_dofs();
@@ -363,24 +366,22 @@ namespace vefs
         transfer.unpack(fields, new_vectors);
         // swap(), not operator=: a vector whose owned range is the same
         // after the change would keep its old ghost layout.
-        fields.fields.swap(transferred[0]);
+        fields.swap(transferred[0]);
         if (with_gradient)
-          fields.level_set_gradient.swap(transferred[1]);
+          fields.swap_level_set_gradient(transferred[1]);
         else
-          fields.initialize_vector(fields.level_set_gradient);
+          fields.initialize_vector(fields.mutable_level_set_gradient_vector());
         if (surface_ahead)
           {
             surface_ahead->swap(transferred.back());
-            surface_ahead->update_ghost_values();
-            fields.distribute_constraints(*surface_ahead);
-            surface_ahead->update_ghost_values();
+            fields.make_consistent(*surface_ahead);
           }
         if (hermite_refinement)
           hermite_refinement->unpack(fields);
         if (present_band != PresentBand::kept)
-          fields.coarsened_detail.unpack(triangulation,
-                                         fields.dof_handler,
-                                         fields.fields);
+          coarsened_detail->unpack(triangulation,
+                                   fields.dof_handler,
+                                   fields.mutable_vector());
         fields.finalize();
         changed = true;
       }
@@ -392,7 +393,7 @@ namespace vefs
   count_surface_cells(const TransportedFields<dim> &fields,
                       const unsigned int            max_level)
   {
-    return count_surface_cells(fields, fields.fields, max_level);
+    return count_surface_cells(fields, fields.vector(), max_level);
   }
 
   template <int dim>
@@ -439,7 +440,8 @@ namespace vefs
     const unsigned int                           max_cycles,
     const LevelSetInterpolation                  interpolation,
     typename TransportedFields<dim>::VectorType &surface_ahead,
-    const bool                                   coarsen_present_band)
+    const bool                                   coarsen_present_band,
+    CoarsenedDetail<dim>                        &coarsened_detail)
   {
     // The halo makes one cycle enough unless the surface moves farther than
     // the last step's: more cycles then, until the predicted surface lies
@@ -457,7 +459,8 @@ namespace vefs
                         1,
                         interpolation,
                         &surface_ahead,
-                        present_band))
+                        present_band,
+                        &coarsened_detail))
           break;
         ++changes;
         if (count_surface_cells(fields, surface_ahead, levels.max_level)
@@ -465,7 +468,7 @@ namespace vefs
           break;
       }
     if (coarsen_present_band)
-      fields.coarsened_detail.update_ghosts(triangulation);
+      coarsened_detail.update_ghosts(triangulation);
     return changes;
   }
 
@@ -476,7 +479,8 @@ namespace vefs
                 const unsigned int,
                 const LevelSetInterpolation,
                 TransportedFields<2>::VectorType *,
-                const PresentBand);
+                const PresentBand,
+                CoarsenedDetail<2> *);
   template bool
   adapt_mesh<3>(parallel::distributed::Triangulation<3> &,
                 TransportedFields<3> &,
@@ -484,7 +488,8 @@ namespace vefs
                 const unsigned int,
                 const LevelSetInterpolation,
                 TransportedFields<3>::VectorType *,
-                const PresentBand);
+                const PresentBand,
+                CoarsenedDetail<3> *);
 
   template SurfaceCells
   count_surface_cells<2>(const TransportedFields<2> &, const unsigned int);
@@ -498,7 +503,8 @@ namespace vefs
                              const unsigned int,
                              const LevelSetInterpolation,
                              TransportedFields<2>::VectorType &,
-                             const bool);
+                             const bool,
+                             CoarsenedDetail<2> &);
   template unsigned int
   refine_ahead_of_surface<3>(parallel::distributed::Triangulation<3> &,
                              TransportedFields<3> &,
@@ -506,5 +512,6 @@ namespace vefs
                              const unsigned int,
                              const LevelSetInterpolation,
                              TransportedFields<3>::VectorType &,
-                             const bool);
+                             const bool,
+                             CoarsenedDetail<3> &);
 } // namespace vefs

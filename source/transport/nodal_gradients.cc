@@ -28,10 +28,8 @@ namespace vefs
                   const double       h =
                     cell->vertex(1u << j)[j] - cell->vertex(0)[j];
                   const double difference =
-                    fields.fields(
-                      cell->vertex_dof_index((v >> j) & 1 ? v : w, c)) -
-                    fields.fields(
-                      cell->vertex_dof_index((v >> j) & 1 ? w : v, c));
+                    fields.value_at(cell, (v >> j) & 1 ? v : w, c) -
+                    fields.value_at(cell, (v >> j) & 1 ? w : v, c);
                   gradients[j](dof) += difference / h;
                 }
             }

@@ -85,8 +85,7 @@ namespace vefs
       hermite.recover(fields,
                       interpolation ==
                         LevelSetInterpolation::gradient_augmented);
-    constexpr unsigned int c   = TransportedFields<dim>::level_set_component;
-    const auto            &psi = fields.fields;
+    constexpr unsigned int c = TransportedFields<dim>::level_set_component;
 
     std::vector<Point<dim>>     crossings;
     std::vector<Tensor<1, dim>> normals;
@@ -101,7 +100,7 @@ namespace vefs
           bool has_liquid = false, has_gas = false;
           for (const unsigned int v : cell->vertex_indices())
             {
-              values[v] = psi(cell->vertex_dof_index(v, c));
+              values[v] = fields.level_set_at(cell, v);
               (values[v] < 0 ? has_liquid : has_gas) = true;
             }
           const auto interpolate = [&](const Point<dim> &xi) {
@@ -206,8 +205,8 @@ namespace vefs
                    std::back_inserter(nearest));
         const Point<dim> &point    = all_crossings[nearest[0]];
         const double      distance = node.point.distance(point);
-        const double      sign     = psi(dof) < 0 ? -1 : 1;
-        fields.fields(dof)         = sign * distance;
+        const double      sign     = fields.level_set(node) < 0 ? -1 : 1;
+        fields.set_level_set(node, sign * distance);
         // The gradient of the distance, for the gradient-augmented
         // transport: the surface normal at the nearest crossing (the
         // direction to that crossing is off by up to a quarter cell over the
@@ -216,8 +215,7 @@ namespace vefs
           cubic ? all_normals[nearest[0]] : Tensor<1, dim>();
         if (gradient.norm() == 0 && distance > 0)
           gradient = sign * (node.point - point) / distance;
-        for (unsigned int d = 0; d < dim; ++d)
-          fields.level_set_gradient(node.dofs[d]) = gradient[d];
+        fields.set_level_set_gradient(node, gradient);
       }
     fields.finalize();
   }

@@ -60,7 +60,8 @@ namespace vefs
                                   levels.max_level - levels.min_level,
                                   parameters.level_set_interpolation,
                                   surface_ahead,
-                                  parameters.band_in_one_change);
+                                  parameters.band_in_one_change,
+                                  coarsened_detail);
         statistics.advected_cells = triangulation.n_global_active_cells();
       }
 
@@ -69,8 +70,12 @@ namespace vefs
     TimerOutput::Scope scope(timer, "1 advection");
     velocity.set_advection_velocity(fields, time);
     level_set_history.add_step(fields, tau);
-    advect_along_characteristics(fields, tau, locator, foot_interpolation);
-    fields.coarsened_detail.clear();
+    advect_along_characteristics(fields,
+                                 tau,
+                                 locator,
+                                 foot_interpolation,
+                                 &coarsened_detail);
+    coarsened_detail.clear();
     remap = true;
     if (level_set_history.enabled())
       {

@@ -180,9 +180,10 @@ namespace
                : std::to_string(Utilities::MPI::sum(n, comm));
     };
     out << name << "entries different, fields: "
-        << sum_differences(fields.fields, fresh.fields)
+        << sum_differences(fields.vector(), fresh.vector())
         << ", level set gradient: "
-        << sum_differences(fields.level_set_gradient, fresh.level_set_gradient)
+        << sum_differences(fields.level_set_gradient_vector(),
+                           fresh.level_set_gradient_vector())
         << '\n';
     const auto kept = history.vectors(), restored = fresh_history.vectors();
     out << name << "history vectors: " << kept.size() << " written, "

@@ -107,12 +107,13 @@ namespace
     fields.setup_dofs();
     for (const auto &node : fields.nodes())
       {
-        fields.fields(
+        fields.mutable_vector()(
           node.dofs[vefs::TransportedFields<dim>::level_set_component]) =
           f.value(node.point);
         const Tensor<1, dim> gradient = f.gradient(node.point);
         for (unsigned int d = 0; d < dim; ++d)
-          fields.level_set_gradient(node.dofs[d]) = gradient[d];
+          fields.mutable_level_set_gradient_vector()(node.dofs[d]) =
+            gradient[d];
       }
     fields.finalize();
 

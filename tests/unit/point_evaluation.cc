@@ -113,7 +113,7 @@ namespace
           {
             VectorTools::point_value(fields.mapping,
                                      fields.dof_handler,
-                                     fields.fields,
+                                     fields.vector(),
                                      points[i],
                                      values);
           }

@@ -191,7 +191,7 @@ namespace
     const vefs::Rheology<2>     elastic(
       material(0, vefs::StressUpdate::exponential));
     const auto report =
-      vefs::update_stress(fields, fields.fields, domain, elastic, tau, true);
+      vefs::update_stress(fields, fields.vector(), domain, elastic, tau, true);
 
     // The nodes of liquid cells, owned or ghost.
     std::set<types::global_dof_index> liquid_nodes;
@@ -215,7 +215,7 @@ namespace
       {
         SymmetricTensor<2, 2> sigma;
         for (unsigned int i = 0; i < 3; ++i)
-          sigma.access_raw_entry(i) = fields.fields(
+          sigma.access_raw_entry(i) = fields.vector()(
             node.dofs[vefs::TransportedFields<2>::first_stress_component + i]);
         if (liquid_nodes.count(node.dofs[0]))
           {

@@ -73,7 +73,7 @@ namespace
     // values do.
     for (const auto &node : fields.nodes())
       for (unsigned int d = 0; d < dim; ++d)
-        fields.level_set_gradient(node.dofs[d]) =
+        fields.mutable_level_set_gradient_vector()(node.dofs[d]) =
           std::cos(3 * node.point[d] + d) * (1 + node.point[0]);
     fields.finalize();
 
@@ -105,16 +105,17 @@ namespace
       all_components.push_back(c);
     for (unsigned int d = 0; d < dim; ++d)
       gradient_components.push_back(d);
-    vefs::VertexFieldTransfer<dim> transfer(triangulation,
-                                            fields,
-                                            {{&fields.fields, all_components},
-                                             {&fields.level_set_gradient,
-                                              gradient_components}});
+    vefs::VertexFieldTransfer<dim> transfer(
+      triangulation,
+      fields,
+      {{&fields.mutable_vector(), all_components},
+       {&fields.mutable_level_set_gradient_vector(), gradient_components}});
     parallel::distributed::SolutionTransfer<dim, VectorType> reference(
       fields.dof_handler);
     reference.prepare_for_coarsening_and_refinement(
-      std::vector<const VectorType *>{&fields.fields,
-                                      &fields.level_set_gradient});
+      std::vector<const VectorType *>{
+        &fields.mutable_vector(),
+        &fields.mutable_level_set_gradient_vector()});
     triangulation.execute_coarsening_and_refinement();
 
     fields.setup_dofs();

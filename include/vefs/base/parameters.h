@@ -159,7 +159,7 @@ namespace vefs
     /**
      * Whether that change also coarsens the present band ('Band placement =
      * predicted, one change'), the coarsened cells' fields kept for the
-     * advection (TransportedFields::coarsened_detail).
+     * advection (CoarsenedDetail, owned by the SurfaceTracker).
      */
     bool band_in_one_change;
     /**

@@ -4,7 +4,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
-#include <vector>
+#include <vefs/compat/local_constraint_lines.h>
 
 namespace vefs
 {
@@ -59,13 +59,7 @@ namespace vefs
 
     const AffineConstraints<double> *constraints = nullptr;
     bool                             complete    = false;
-    /** Per owned constrained unknown: its place, inhomogeneity and entries
-     * [entry_start[i], entry_start[i + 1]). */
-    std::vector<Place>        targets;
-    std::vector<double>       inhomogeneities;
-    std::vector<unsigned int> entry_start;
-    std::vector<Place>        entry_places;
-    std::vector<double>       entry_weights;
+    LocalConstraintLines<Place>      lines;
   };
 } // namespace vefs
 

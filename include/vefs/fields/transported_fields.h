@@ -3,6 +3,7 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -10,7 +11,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
-#include <vefs/fields/coarsened_detail.h>
+#include <vefs/compat/local_constraint_lines.h>
 
 #include <array>
 #include <vector>
@@ -61,7 +62,11 @@ namespace vefs
       return n_components > first_stress_component;
     }
 
-    /** The velocity stored at @p node. */
+    /**
+     * @name Values at an owned node (nodes()). The setters write the owned
+     * entry only: call finalize() after the last one.
+     */
+    /** @{ */
     Tensor<1, dim>
     velocity(const Node &node) const
     {
@@ -70,6 +75,222 @@ namespace vefs
         u[d] = fields(node.dofs[d]);
       return u;
     }
+
+    void
+    set_velocity(const Node &node, const Tensor<1, dim> &u)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        fields(node.dofs[d]) = u[d];
+    }
+
+    double
+    level_set(const Node &node) const
+    {
+      return fields(node.dofs[level_set_component]);
+    }
+
+    void
+    set_level_set(const Node &node, const double psi)
+    {
+      fields(node.dofs[level_set_component]) = psi;
+    }
+
+    /** Only if has_stress(). */
+    SymmetricTensor<2, dim>
+    stress(const Node &node) const
+    {
+      SymmetricTensor<2, dim> sigma;
+      for (unsigned int i = 0; i < n_stress_components; ++i)
+        sigma.access_raw_entry(i) =
+          fields(node.dofs[first_stress_component + i]);
+      return sigma;
+    }
+
+    void
+    set_stress(const Node &node, const SymmetricTensor<2, dim> &sigma)
+    {
+      for (unsigned int i = 0; i < n_stress_components; ++i)
+        fields(node.dofs[first_stress_component + i]) =
+          sigma.access_raw_entry(i);
+    }
+
+    /** Component @p c of the layout above, for loops over all fields. */
+    double
+    value(const Node &node, const unsigned int c) const
+    {
+      return fields(node.dofs[c]);
+    }
+
+    void
+    set_value(const Node &node, const unsigned int c, const double value)
+    {
+      fields(node.dofs[c]) = value;
+    }
+
+    /** The level set gradient of the gradient-augmented transport. */
+    Tensor<1, dim>
+    level_set_gradient(const Node &node) const
+    {
+      Tensor<1, dim> gradient;
+      for (unsigned int d = 0; d < dim; ++d)
+        gradient[d] = gradient_of_level_set(node.dofs[d]);
+      return gradient;
+    }
+
+    void
+    set_level_set_gradient(const Node &node, const Tensor<1, dim> &gradient)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        gradient_of_level_set(node.dofs[d]) = gradient[d];
+    }
+    /** @} */
+
+    /**
+     * @name Values at vertex @p v of a cell (or a line) of dof_handler
+     * (cell_of()), owned or ghost: the gathers of cell loops.
+     */
+    /** @{ */
+    template <typename CellIterator>
+    Tensor<1, dim>
+    velocity_at(const CellIterator &cell, const unsigned int v) const
+    {
+      Tensor<1, dim> u;
+      for (unsigned int d = 0; d < dim; ++d)
+        u[d] = fields(cell->vertex_dof_index(v, d));
+      return u;
+    }
+
+    template <typename CellIterator>
+    double
+    level_set_at(const CellIterator &cell, const unsigned int v) const
+    {
+      return fields(cell->vertex_dof_index(v, level_set_component));
+    }
+
+    /** Only if has_stress(). */
+    template <typename CellIterator>
+    SymmetricTensor<2, dim>
+    stress_at(const CellIterator &cell, const unsigned int v) const
+    {
+      SymmetricTensor<2, dim> sigma;
+      for (unsigned int i = 0; i < n_stress_components; ++i)
+        sigma.access_raw_entry(i) =
+          fields(cell->vertex_dof_index(v, first_stress_component + i));
+      return sigma;
+    }
+
+    template <typename CellIterator>
+    double
+    value_at(const CellIterator &cell,
+             const unsigned int  v,
+             const unsigned int  c) const
+    {
+      return fields(cell->vertex_dof_index(v, c));
+    }
+
+    template <typename CellIterator>
+    Tensor<1, dim>
+    level_set_gradient_at(const CellIterator &cell, const unsigned int v) const
+    {
+      Tensor<1, dim> gradient;
+      for (unsigned int d = 0; d < dim; ++d)
+        gradient[d] = gradient_of_level_set(cell->vertex_dof_index(v, d));
+      return gradient;
+    }
+
+    /** For a vertex whose degrees of freedom this rank owns. */
+    template <typename CellIterator>
+    void
+    set_velocity_at(const CellIterator   &cell,
+                    const unsigned int    v,
+                    const Tensor<1, dim> &u)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        fields(cell->vertex_dof_index(v, d)) = u[d];
+    }
+    /** @} */
+
+    /**
+     * The entry of local index @p i (owned or ghost, in the numbering of
+     * partitioner), for walks over local index tables.
+     */
+    double
+    local_value(const unsigned int i) const
+    {
+      return fields.local_element(i);
+    }
+
+    /** Whether every owned entry of the fields is finite (this rank's). */
+    bool
+    owned_values_finite() const;
+
+    /**
+     * @p copy: the fields on the layout of the current mesh, ghosts up to
+     * date (a velocity kept past the step that replaces it).
+     */
+    void
+    copy_to(VectorType &copy) const;
+
+    /** The same for the level set gradient. */
+    void
+    copy_level_set_gradient_to(VectorType &copy) const;
+
+    /**
+     * Exchange the fields' vector (or the level set gradient's) with
+     * @p other, a vector of the same layout: the level set history lends
+     * its kept vectors to the fields' own interpolation and takes them back.
+     */
+    void
+    swap(VectorType &other)
+    {
+      fields.swap(other);
+    }
+
+    void
+    swap_level_set_gradient(VectorType &other)
+    {
+      gradient_of_level_set.swap(other);
+    }
+
+    /**
+     * @name The whole vectors, for the modules that hand them to deal.II
+     * (FEValues, DataOut, SolutionTransfer) or carry them through a mesh
+     * change (doc/code.md, 'The fields'); everything else goes through the
+     * accessors above.
+     */
+    /** @{ */
+    const VectorType &
+    vector() const
+    {
+      return fields;
+    }
+
+    /** For the mesh transfer and the loading of a checkpoint only. */
+    VectorType &
+    mutable_vector()
+    {
+      return fields;
+    }
+
+    /**
+     * The gradient of the level set, carried along the characteristics with
+     * it by the gradient-augmented transport (FieldHermite): same layout
+     * as vector(), the derivative in direction d in the slot of velocity
+     * component d (the other slots are unused).
+     */
+    const VectorType &
+    level_set_gradient_vector() const
+    {
+      return gradient_of_level_set;
+    }
+
+    /** For the mesh transfer and the loading of a checkpoint only. */
+    VectorType &
+    mutable_level_set_gradient_vector()
+    {
+      return gradient_of_level_set;
+    }
+    /** @} */
 
     /** Distribute degrees of freedom after a mesh change; fields are zero. */
     void
@@ -96,6 +317,20 @@ namespace vefs
     finalize();
 
     /**
+     * The same for the fields only, the level set gradient left as it is
+     * (the extension changes no level set).
+     */
+    void
+    finalize_fields_only();
+
+    /** Update the ghost entries of the fields (no constraint changed). */
+    void
+    update_ghost_values() const
+    {
+      fields.update_ghost_values();
+    }
+
+    /**
      * Set the constrained entries (hanging nodes, periodic walls) of
      * @p vector, a vector with the layout of the fields whose ghost values
      * are up to date; its ghost values are stale afterwards. The same
@@ -104,6 +339,14 @@ namespace vefs
      */
     void
     distribute_constraints(VectorType &vector) const;
+
+    /**
+     * Make the hanging nodes and ghost entries of @p vector, a vector with
+     * the layout of the fields whose owned entries are set, consistent:
+     * what finalize() does to the fields.
+     */
+    void
+    make_consistent(VectorType &vector) const;
 
     /** Vector with the layout of the fields, ghosted; all such vectors
      * share one MPI partitioner, made once per mesh. */
@@ -136,20 +379,6 @@ namespace vefs
     IndexSet                                           owned_dofs;
     IndexSet                                           relevant_dofs;
     std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
-    VectorType                                         fields;
-    /**
-     * The gradient of the level set, carried along the characteristics with
-     * it by the gradient-augmented transport (FieldHermite): same layout
-     * as @p fields, the derivative in direction d in the slot of velocity
-     * component d (the other slots are unused).
-     */
-    VectorType level_set_gradient;
-    /**
-     * The fields of the cells the last mesh change coarsened, at their
-     * former children's vertices, until the advection has read them ('Band
-     * placement = predicted, one change'); empty otherwise.
-     */
-    CoarsenedDetail<dim> coarsened_detail;
 
   private:
     /** The owned lines of @p constraints in local vector indices. */
@@ -158,15 +387,16 @@ namespace vefs
 
     const std::vector<unsigned int> periodic_directions;
     std::vector<Node>               owned_nodes;
+    VectorType                      fields;
+    /** See level_set_gradient_vector(). */
+    VectorType gradient_of_level_set;
     /**
      * Whether every source of an owned constrained entry is owned or a ghost
      * (then distribute_constraints() uses the local lines below).
      */
-    bool                                         constraints_are_local = false;
-    std::vector<unsigned int>                    constrained_entries;
-    std::vector<double>                          inhomogeneities;
-    std::vector<unsigned int>                    sources_start;
-    std::vector<std::pair<unsigned int, double>> sources;
+    bool constraints_are_local = false;
+    /** The owned lines of @p constraints, by local vector indices. */
+    LocalConstraintLines<unsigned int> local_constraints;
   };
 } // namespace vefs
 

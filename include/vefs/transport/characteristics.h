@@ -5,6 +5,7 @@
 
 #include <vefs/base/parameters.h>
 #include <vefs/compat/box_mesh_locator.h>
+#include <vefs/fields/coarsened_detail.h>
 #include <vefs/fields/transported_fields.h>
 
 #include <array>
@@ -46,14 +47,17 @@ namespace vefs
    * outside the cavity are moved back onto its walls, or wrapped around
    * periodic walls.
    * The fields are interpolated at the feet as @p interpolation says
-   * (FieldHermite for the cubic ones).
+   * (FieldHermite for the cubic ones); in the cells the last mesh change
+   * coarsened, in their former children if @p coarsened_detail holds them.
    */
   template <int dim>
   void
-  advect_along_characteristics(TransportedFields<dim>    &fields,
-                               const double               tau,
-                               const BoxMeshLocator<dim> &locator,
-                               const FootInterpolation   &interpolation);
+  advect_along_characteristics(
+    TransportedFields<dim>     &fields,
+    const double                tau,
+    const BoxMeshLocator<dim>  &locator,
+    const FootInterpolation    &interpolation,
+    const CoarsenedDetail<dim> *coarsened_detail = nullptr);
 
   /**
    * One step of the trace above for arbitrary @p points (four stages, in

@@ -23,7 +23,7 @@ namespace vefs
    *   differences on a uniform mesh): O(h^3) per step.
    * - gradient augmented (Nave, Rosales & Seibold, J. Comput. Phys. 229,
    *   2010): the gradient is the one carried along the characteristics in
-   *   TransportedFields::level_set_gradient, the mixed derivatives are
+   *   TransportedFields::level_set_gradient_vector(), the mixed derivatives are
    *   recovered from it the same way. The gradient holds what the nodal
    *   values alone cannot (a filament a few cells thin), so the
    *   interpolation stays accurate there.

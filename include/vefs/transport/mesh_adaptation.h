@@ -2,6 +2,7 @@
 #define vefs_mesh_adaptation_h
 
 #include <vefs/base/parameters.h>
+#include <vefs/fields/coarsened_detail.h>
 #include <vefs/fields/transported_fields.h>
 
 namespace vefs
@@ -98,7 +99,7 @@ namespace vefs
     kept,
     /**
      * Coarsen it in the same change; the coarsened cells keep their fields
-     * for the advection in TransportedFields::coarsened_detail.
+     * for the advection in a CoarsenedDetail.
      */
     coarsened,
     /**
@@ -124,7 +125,8 @@ namespace vefs
    * surface moves slowly this halo is thin, where it moves fast as wide as
    * the motion. The adaptation after the advection then keeps such cells
    * within the CFL number's reach (MeshLevels::expect_cfl()) as they are.
-   * @p present_band says whether the present surface's band is kept too.
+   * @p present_band says whether the present surface's band is kept too;
+   * if not, @p coarsened_detail keeps the coarsened cells' fields.
    */
   template <int dim>
   bool
@@ -135,7 +137,8 @@ namespace vefs
     const unsigned int                           max_cycles,
     const LevelSetInterpolation                  interpolation,
     typename TransportedFields<dim>::VectorType *surface_ahead = nullptr,
-    const PresentBand present_band = PresentBand::kept);
+    const PresentBand     present_band     = PresentBand::kept,
+    CoarsenedDetail<dim> *coarsened_detail = nullptr);
 
   /** The cells the surface (psi = 0) crosses, over all ranks. */
   struct SurfaceCells
@@ -170,9 +173,9 @@ namespace vefs
    * advection will give (predict_level_set()), one cycle at a time until
    * the predicted surface lies in cells of the finest level, at most
    * @p max_cycles times. With @p coarsen_present_band the first cycle also
-   * coarsens the present band (PresentBand::coarsened), and the ghost cells
-   * get the coarsened cells' detail at the end. Returns the number of mesh
-   * changes made.
+   * coarsens the present band (PresentBand::coarsened), keeping the
+   * coarsened cells' fields in @p coarsened_detail, whose ghost cells get
+   * theirs at the end. Returns the number of mesh changes made.
    */
   template <int dim>
   unsigned int
@@ -183,7 +186,8 @@ namespace vefs
     const unsigned int                           max_cycles,
     const LevelSetInterpolation                  interpolation,
     typename TransportedFields<dim>::VectorType &surface_ahead,
-    const bool                                   coarsen_present_band);
+    const bool                                   coarsen_present_band,
+    CoarsenedDetail<dim>                        &coarsened_detail);
 } // namespace vefs
 
 #endif

@@ -110,6 +110,12 @@ namespace vefs
     TimerOutput                               &timer;
     const FootInterpolation                    foot_interpolation;
     LevelSetHistory<dim>                       level_set_history;
+    /**
+     * The fields of the cells the band placement coarsened before the
+     * advection, until the advection has read them ('Band placement =
+     * predicted, one change'); empty otherwise.
+     */
+    CoarsenedDetail<dim> coarsened_detail;
     /** Whether the step under way remaps (set by advect()). */
     bool   remap           = true;
     double volume_at_start = 0;
