@@ -176,18 +176,17 @@ namespace vefs
     if (rheology.has_stress())
       {
         TimerOutput::Scope scope(timer, "4 stress update");
-        // A copy: the stress update writes the fields it reads the
-        // velocity from (a vector of their layout, doc/code.md).
-        typename TransportedFields<dim>::VectorType new_velocity;
-        fields.copy_to(new_velocity);
+        // The update reads the velocity components of the vector and writes
+        // the stress components of the fields: the fields' own vector serves
+        // with theta = 1, no copy needed.
         if (theta < 1)
           {
-            blended_velocity.sadd(1 - theta, theta, new_velocity);
+            blended_velocity.sadd(1 - theta, theta, fields.vector());
             blended_velocity.update_ghost_values();
           }
         const StressUpdateReport report =
           update_stress(fields,
-                        theta < 1 ? blended_velocity : new_velocity,
+                        theta < 1 ? blended_velocity : fields.vector(),
                         domain,
                         rheology,
                         tau,
