@@ -8,7 +8,7 @@ Usage (from anywhere):
       [--levels 2 3 4] [--np 2] [--end-time 0.3]
       [--results-dir benchmarks/results/bouncing_ball_3d]
       [--output benchmarks/results/bouncing_ball_3d_study.md] [--no-run]
-      [--set 'Solver/Stress theta=0.5' ...]
+      [--set 'Stress/Stress theta=0.5' ...]
 
 Each run is the scene with Maximum level = L (finest cells 0.1 m / 2^L at
 the surface; Bulk level = L - 1), the given end time, without visualization

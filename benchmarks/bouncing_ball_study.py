@@ -8,7 +8,7 @@ Usage (from anywhere):
       [--levels 4 5 6] [--time-steps 0.002 0.001] [--end-time 0.45]
       [--results-dir benchmarks/results/bouncing_ball_2d_stiff]
       [--output benchmarks/results/bouncing_ball_study.md] [--no-run]
-      [--set 'Solver/Stress update=exponential' ...]
+      [--set 'Stress/Stress update=exponential' ...]
 
 Each run is the scene with Maximum level = L (finest cells 0.1 m / 2^L at
 the surface), Bulk level = L - 1, the given `Time step` (an upper bound:

@@ -15,7 +15,7 @@ For every run a copy of the base prm is written to
   Mesh refinement / Maximum level     = L
   Mesh refinement / Bulk level        = L - 2
   Mesh refinement / Minimum level     = L - 4
-  Mesh refinement / Volume correction = true | false
+  Transport / Volume correction = true | false
   Time / Target CFL                   = C
   Output / Interval                   = 0      (no visualization files)
   Output / Verbose                    = true
@@ -136,7 +136,7 @@ def make_prm(text, L, cfl, corr, output_dir):
     text = set_entry(text, ["Mesh refinement"], "Maximum level", str(L))
     text = set_entry(text, ["Mesh refinement"], "Bulk level", str(L - 2))
     text = set_entry(text, ["Mesh refinement"], "Minimum level", str(L - 4))
-    text = set_entry(text, ["Mesh refinement"], "Volume correction",
+    text = set_entry(text, ["Transport"], "Volume correction",
                      "true" if corr else "false")
     text = set_entry(text, ["Time"], "Target CFL", "%g" % cfl)
     text = set_entry(text, ["Output"], "Interval", "0")
@@ -371,8 +371,8 @@ def parse_args(argv=None):
                    help="leave out the runs whose name matches")
     p.add_argument("--set", action="append", default=[],
                    metavar="SECTION/ENTRY=VALUE",
-                   help="one more prm entry for every run, e.g. 'Mesh "
-                   "refinement/Level set interpolation=linear' (repeatable)")
+                   help="one more prm entry for every run, e.g. "
+                   "'Transport/Level set interpolation=linear' (repeatable)")
     p.add_argument("--vefs", default="build/vefs")
     p.add_argument("--results-dir", default="benchmarks/results")
     p.add_argument("--doc", default="benchmarks/results/transport.md")

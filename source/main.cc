@@ -2,8 +2,8 @@
 #include <deal.II/base/mpi.h>
 
 #include <vefs/base/parameter_file.h>
-#include <vefs/base/parameters.h>
 #include <vefs/base/stop_signal.h>
+#include <vefs/core/parameters.h>
 #include <vefs/core/simulator.h>
 #include <vefs/flow/stokes_step.h>
 #include <vefs/io/checkpoint.h>
@@ -136,8 +136,10 @@ main(int argc, char *argv[])
     return 1;
   };
 
+  // The entries are bound to the members of parameters (add_parameter).
+  Parameters       parameters;
   ParameterHandler prm;
-  Parameters::declare(prm);
+  parameters.declare(prm);
   for (int i = 1; i < argc; ++i)
     {
       const std::string argument = argv[i];
@@ -189,20 +191,21 @@ main(int argc, char *argv[])
 
   const std::string where =
     file.empty() ? "default parameters" : "'" + file + "'";
-  Parameters parameters;
   try
     {
+      std::vector<std::string> file_warnings;
       if (!file.empty())
-        {
-          check_parameter_file(file);
-          prm.parse_input(file);
-        }
+        file_warnings =
+          read_parameter_file(prm, file, Parameters::moved_entries);
       // The directory may have moved since the checkpoint.
       if (!resume_directory.empty())
         prm.set("Output directory", resume_directory);
-      parameters.parse(prm);
+      parameters.check();
+      file_warnings.insert(file_warnings.end(),
+                           parameters.warnings.begin(),
+                           parameters.warnings.end());
       if (root)
-        for (const auto &warning : parameters.warnings)
+        for (const auto &warning : file_warnings)
           std::cerr << "vefs: warning in " << where << ": " << warning
                     << std::endl;
       parameters.check_for_ranks(

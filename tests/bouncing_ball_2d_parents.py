@@ -1,5 +1,5 @@
 """Checker of bouncing_ball_2d_parents: the stiff ball of
-bouncing_ball_2d_stiff with 'Mesh refinement/Flow cells = parents'. The same
+bouncing_ball_2d_stiff with 'Flow/Flow cells = parents'. The same
 checks against the same references (Newton's second law for the centroid
 over the contact within 10 %, volume change below 1e-6, a rebound and a
 lift-off, at least 0.8 of the energy left after the bounce): see

@@ -2,7 +2,7 @@
 """Checker of the shear_wave_2d_midpoint test: the scene and report of
 shear_wave_2d (see tests/shear_wave_2d.py: the standing shear wave of a
 neo-Hookean solid against its exact solution, scripts/shear_wave.py), run
-with the midpoint rule (Solver/Stress theta = 0.5, exponential update).
+with the midpoint rule (Stress/Stress theta = 0.5, exponential update).
 
 Usage: shear_wave_2d_midpoint.py OUTPUT_DIR
 

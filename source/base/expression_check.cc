@@ -2,8 +2,8 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
+#include <vefs/base/errors.h>
 #include <vefs/base/expression_check.h>
-#include <vefs/base/parameters.h>
 
 #include <iostream>
 #include <sstream>

@@ -1,12 +1,12 @@
 #include <deal.II/base/utilities.h>
 
+#include <vefs/base/errors.h>
 #include <vefs/base/parameter_file.h>
-#include <vefs/base/parameters.h>
 
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <vector>
+#include <sstream>
 
 namespace vefs
 {
@@ -40,10 +40,29 @@ namespace vefs
              line.compare(0, word.size(), word) == 0 &&
              std::isspace(line[word.size()]);
     }
+
+    /** A moved entry found at its old place: where it goes, what it says. */
+    struct MovedSetting
+    {
+      const MovedEntry *entry;
+      std::string       value;
+      unsigned int      line;
+    };
+
+    /** The text of a deal.II exception for the user, without its trace. */
+    std::string
+    message_of(const dealii::ExceptionBase &exception)
+    {
+      std::ostringstream text;
+      exception.print_info(text);
+      return dealii::Utilities::trim(text.str());
+    }
   } // namespace
 
-  void
-  check_parameter_file(const std::string &file)
+  std::vector<std::string>
+  read_parameter_file(dealii::ParameterHandler      &prm,
+                      const std::string             &file,
+                      const std::vector<MovedEntry> &moved_entries)
   {
     if (std::filesystem::is_directory(file))
       throw InputError("this is a directory, not a parameter file");
@@ -51,6 +70,10 @@ namespace vefs
     if (!input)
       throw InputError("cannot open the parameter file");
 
+    // The text ParameterHandler reads: the file with the lines of moved
+    // entries blanked, so that its line numbers stay those of the file.
+    std::ostringstream                  text;
+    std::vector<MovedSetting>           moved;
     std::vector<std::string>            path;
     std::map<std::string, unsigned int> first_line;
     unsigned int                        number = 0;
@@ -58,41 +81,90 @@ namespace vefs
     while (std::getline(input, line))
       {
         ++number;
+        const unsigned int first = number;
+        std::string        whole = line;
         // A trailing backslash continues the value on the next line.
-        while (!line.empty() && line.back() == '\\' && input)
+        while (!whole.empty() && whole.back() == '\\' && input)
           {
             std::string next;
             std::getline(input, next);
             ++number;
-            line.pop_back();
-            line += next;
+            line += "\n" + next;
+            whole.pop_back();
+            whole += next;
           }
-        const std::string text = stripped(line);
-        if (starts_with_word(text, "subsection"))
-          path.push_back(normalized(text.substr(10)));
-        else if (text == "end" && !path.empty())
+        const std::string content = stripped(whole);
+        if (starts_with_word(content, "subsection"))
+          path.push_back(normalized(content.substr(10)));
+        else if (content == "end" && !path.empty())
           path.pop_back();
-        else if (starts_with_word(text, "set"))
+        else if (starts_with_word(content, "set") &&
+                 content.find('=') != std::string::npos)
           {
-            const auto equal = text.find('=');
-            if (equal == std::string::npos)
-              continue; // ParameterHandler reports the malformed line
+            const auto        equal = content.find('=');
+            const std::string name  = normalized(content.substr(3, equal - 3));
+            const MovedEntry *move  = nullptr;
+            for (const auto &candidate : moved_entries)
+              if (path.size() == 1 && path[0] == candidate.old_subsection &&
+                  name == candidate.name)
+                move = &candidate;
             std::string entry;
-            for (const auto &section : path)
+            for (const auto &section :
+                 move ? std::vector<std::string>{move->new_subsection} : path)
               entry += section + "/";
-            entry += normalized(text.substr(3, equal - 3));
-            const auto [known, inserted] = first_line.emplace(entry, number);
+            entry += name;
+            const auto [known, inserted] = first_line.emplace(entry, first);
             if (!inserted)
               throw InputError("entry '" + entry + "': set twice (lines " +
                                std::to_string(known->second) + " and " +
-                               std::to_string(number) +
+                               std::to_string(first) +
                                "); the last value would win silently, keep "
                                "one of them");
+            if (move)
+              {
+                moved.push_back(MovedSetting{move,
+                                             dealii::Utilities::trim(
+                                               content.substr(equal + 1)),
+                                             first});
+                line = std::string(number - first, '\n');
+              }
           }
+        text << line << '\n';
       }
     if (first_line.empty())
       throw InputError("the file sets no entry (it is empty or has only "
                        "comments); add 'set' lines, or run vefs without a "
                        "file for the default scene");
+
+    std::istringstream parsed(text.str());
+    prm.parse_input(parsed, file);
+
+    std::vector<std::string> warnings;
+    for (const auto &setting : moved)
+      {
+        const std::string old_path =
+          setting.entry->old_subsection + "/" + setting.entry->name;
+        const std::string new_path =
+          setting.entry->new_subsection + "/" + setting.entry->name;
+        prm.enter_subsection(setting.entry->new_subsection);
+        try
+          {
+            prm.set(setting.entry->name, setting.value);
+          }
+        catch (const dealii::ExceptionBase &error)
+          {
+            throw InputError("entry '" + new_path + "' (line " +
+                             std::to_string(setting.line) + ", as '" +
+                             old_path + "'): " + message_of(error));
+          }
+        prm.leave_subsection();
+        warnings.push_back("entry '" + old_path + "' (line " +
+                           std::to_string(setting.line) + ") has moved to '" +
+                           new_path +
+                           "'; it is read there, but write it "
+                           "there: the old place will be refused in a later "
+                           "version");
+      }
+    return warnings;
   }
 } // namespace vefs

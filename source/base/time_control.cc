@@ -1,3 +1,4 @@
+#include <vefs/base/parameter_entries.h>
 #include <vefs/base/time_control.h>
 
 #include <algorithm>
@@ -17,16 +18,113 @@ namespace vefs
     }
   } // namespace
 
-  TimeControl::TimeControl(const Parameters &parameters,
-                           const double      finest_cell_size)
+  using namespace dealii;
+
+  void
+  TimeParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time");
+    {
+      prm.add_parameter("End time",
+                        end_time,
+                        "Simulated time span (s), starting at t = 0.",
+                        Patterns::Double(0));
+      prm.add_parameter("Time step",
+                        time_step,
+                        "Time step (s). With a positive target CFL number, "
+                        "this is the largest time step allowed.",
+                        Patterns::Double(0));
+      prm.add_parameter("Target CFL",
+                        target_cfl,
+                        "If positive, the time step is chosen so that "
+                        "tau max|u| / h_min equals this number (the method "
+                        "is stable for CFL numbers well above 1).",
+                        Patterns::Double(0));
+      prm.add_parameter(
+        "Maximum strain per step",
+        max_strain_per_step,
+        "If positive (liquids with a stress, elastic solids), the time step "
+        "is also bounded so that tau max|grad u| stays below this number: "
+        "the stress update resolves the deformation of a step only while "
+        "that strain is small. An impact of a soft body raises |grad u| "
+        "by orders of magnitude; the step then shrinks for as long as the "
+        "impact lasts and grows back to 'Time step' after it.",
+        Patterns::Double(0));
+      add_selection(
+        prm,
+        "Strain bound",
+        strain_bound_shortens_step,
+        std::vector<std::pair<std::string, bool>>{{"step", true},
+                                                  {"local", false}},
+        "How 'Maximum strain per step' is kept. step: the next time step is "
+        "shortened so that tau max|grad u| stays below it (and the "
+        "exponential stress update scales tau grad u down where a step "
+        "exceeds it all the same); the elastic energy is stored as the "
+        "velocity says, but the steps shrink like h at an impact. local: "
+        "the time step stays 'Time step' (or what 'Target CFL' allows) and "
+        "only the exponential update scales tau grad u down where it is "
+        "larger: the stress then stores less elastic energy than the "
+        "velocity would, which the energies in the statistics show as "
+        "dissipation. Needs 'Stress/Stress update = exponential' and a "
+        "positive 'Maximum strain per step'.");
+      prm.add_parameter("Maximum steps",
+                        maximum_steps,
+                        "Largest number of time steps: a scene whose End "
+                        "time / Time step exceeds it is refused before any "
+                        "work, and a run whose CFL-limited steps exceed it "
+                        "stops.",
+                        Patterns::Integer(1));
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  TimeParameters::check() const
+  {
+    require(end_time > 0, "Time/End time", "must be positive");
+    require(time_step > 0, "Time/Time step", "must be positive");
+  }
+
+  void
+  OutputParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    {
+      prm.add_parameter("Interval",
+                        output_interval,
+                        "Write visualization files every this many time "
+                        "steps (and at the first and last step); 0 writes "
+                        "none.",
+                        Patterns::Integer(0));
+      prm.add_parameter("Time interval",
+                        output_time_interval,
+                        "If positive, write visualization files at the "
+                        "multiples of this time instead (the time step is "
+                        "shortened to land on them): with an adaptive time "
+                        "step, the frames of a scene then show the same "
+                        "instants whatever the resolution.",
+                        Patterns::Double(0));
+      prm.add_parameter("Verbose",
+                        verbose,
+                        "Print a progress line per time step and a timing "
+                        "summary at the end.",
+                        Patterns::Bool());
+    }
+    prm.leave_subsection();
+  }
+
+  TimeControl::TimeControl(const TimeParameters      &parameters,
+                           const OutputParameters    &output,
+                           const std::vector<double> &gravity,
+                           const double               finest_cell_size)
     : end_time(parameters.end_time)
     , time_step(parameters.time_step)
     , target_cfl(parameters.target_cfl)
     , max_strain_per_step(parameters.max_strain_per_step)
     , strain_bound_shortens_step(parameters.strain_bound_shortens_step)
-    , output_time_interval(parameters.output_time_interval)
-    , output_interval(parameters.output_interval)
-    , gravity(norm(parameters.gravity))
+    , output_time_interval(output.output_time_interval)
+    , output_interval(output.output_interval)
+    , gravity(norm(gravity))
     , finest_cell_size(finest_cell_size)
   {
   }

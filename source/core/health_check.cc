@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <vefs/base/parameter_entries.h>
 #include <vefs/core/health_check.h>
 
 #include <cmath>
@@ -29,6 +30,39 @@ namespace vefs
     }
   } // namespace
 
+  void
+  HealthCheckParameters::declare(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii;
+    prm.enter_subsection("Health check");
+    {
+      prm.add_parameter("Maximum volume change",
+                        max_volume_change,
+                        "The run stops (exit status 1) when the relative "
+                        "volume change |volume_change| of the statistics "
+                        "exceeds this bound: the liquid is no longer the "
+                        "one of the scene.",
+                        Patterns::Double(0));
+      prm.add_parameter("Maximum CFL",
+                        max_cfl,
+                        "The run stops (exit status 1) before a step whose "
+                        "CFL number tau max|u| / h_min exceeds this bound: "
+                        "the velocity has blown up or the time step is far "
+                        "too large.",
+                        Patterns::Double(0));
+      prm.add_parameter("Minimum time step fraction",
+                        min_time_step_fraction,
+                        "The run stops (exit status 1) before a step when "
+                        "the step that 'Time/Target CFL' and 'Time/Maximum "
+                        "strain per step' allow is below this fraction of "
+                        "'Time/Time step': the velocity or its gradient is "
+                        "blowing up, and the steps would shrink for ever "
+                        "instead. 0 turns the check off.",
+                        Patterns::Double(0, 1));
+    }
+    prm.leave_subsection();
+  }
+
   template <int dim>
   bool
   fields_are_finite(const TransportedFields<dim> &fields)
@@ -39,12 +73,13 @@ namespace vefs
   }
 
   std::string
-  step_problem(const Parameters  &p,
-               const unsigned int step,
-               const double       tau,
-               const double       controlled_tau,
-               const double       cfl,
-               const double       max_velocity)
+  step_problem(const HealthCheckParameters &p,
+               const TimeParameters        &time,
+               const unsigned int           step,
+               const double                 tau,
+               const double                 controlled_tau,
+               const double                 cfl,
+               const double                 max_velocity)
   {
     if (!std::isfinite(cfl) || !std::isfinite(max_velocity))
       return "the largest speed is not finite: " + blown_up;
@@ -56,19 +91,19 @@ namespace vefs
     // A blow-up that the strain bound keeps below the CFL bound shows as
     // steps that shrink without end (an unstable ball: 2,600 steps down to
     // 1e-80 s before the right-hand side overflowed).
-    if (controlled_tau < p.min_time_step_fraction * p.time_step)
+    if (controlled_tau < p.min_time_step_fraction * time.time_step)
       return "the time step that 'Time/Target CFL' and 'Time/Maximum strain "
              "per step' allow fell to " +
              number(controlled_tau) +
              " s, below 'Health check/Minimum time step fraction' = " +
              number(p.min_time_step_fraction) + " times 'Time/Time step' (" +
-             number(p.time_step) +
+             number(time.time_step) +
              " s): the velocity or its gradient is blowing up, or 'Time/"
              "Maximum strain per step' is far too small; check the scene, or "
              "lower the bound";
-    if (step > p.maximum_steps)
+    if (step > time.maximum_steps)
       return "more than 'Time/Maximum steps' = " +
-             std::to_string(p.maximum_steps) + " steps (time step " +
+             std::to_string(time.maximum_steps) + " steps (time step " +
              number(tau) +
              " s); raise 'Time/Target CFL' or 'Time/Maximum "
              "steps'";
@@ -81,7 +116,7 @@ namespace vefs
 
   template <int dim>
   std::string
-  state_problem(const Parameters             &p,
+  state_problem(const HealthCheckParameters  &p,
                 const TransportedFields<dim> &fields,
                 const StepStatistics<dim>    &s,
                 const std::string            &non_finite_statistic)
@@ -100,8 +135,8 @@ namespace vefs
       return "the volume change " + number(s.volume_change) +
              " exceeds 'Health check/Maximum volume change' = " +
              number(p.max_volume_change) + "; " + smaller_steps +
-             ", raise the 'Mesh refinement' levels, set 'Mesh refinement/"
-             "Volume correction' = true, or raise the bound";
+             ", raise the 'Mesh refinement' levels, set 'Transport/Volume "
+             "correction' = true, or raise the bound";
     return "";
   }
 
@@ -110,12 +145,12 @@ namespace vefs
   template bool
   fields_are_finite<3>(const TransportedFields<3> &);
   template std::string
-  state_problem<2>(const Parameters &,
+  state_problem<2>(const HealthCheckParameters &,
                    const TransportedFields<2> &,
                    const StepStatistics<2> &,
                    const std::string &);
   template std::string
-  state_problem<3>(const Parameters &,
+  state_problem<3>(const HealthCheckParameters &,
                    const TransportedFields<3> &,
                    const StepStatistics<3> &,
                    const std::string &);

@@ -34,14 +34,18 @@ namespace vefs
     : parameters(parameters)
     , parameters_text(printed(prm))
     , checkpoint(checkpoint)
-    , rheology(parameters)
+    , rheology(parameters.material,
+               parameters.stress,
+               parameters.time.max_strain_per_step)
     , comm(MPI_COMM_WORLD)
     , output(parameters.output_directory, comm, !checkpoint.empty())
     , pcout(std::cout,
-            parameters.verbose && Utilities::MPI::this_mpi_process(comm) == 0)
+            parameters.output.verbose &&
+              Utilities::MPI::this_mpi_process(comm) == 0)
     , timer(comm,
             pcout,
-            parameters.verbose ? TimerOutput::summary : TimerOutput::never,
+            parameters.output.verbose ? TimerOutput::summary
+                                      : TimerOutput::never,
             TimerOutput::wall_times)
     // Each mesh change rebuilds the local mesh from the coarse cells instead
     // of refining and coarsening it until it matches p4est's: fewer passes
@@ -53,25 +57,40 @@ namespace vefs
                     Triangulation<dim>::limit_level_difference_at_vertices,
                     parallel::distributed::Triangulation<
                       dim>::mesh_reconstruction_after_repartitioning)
-    , cavity(std::make_pair(to_point<dim>(parameters.cavity_lower),
-                            to_point<dim>(parameters.cavity_upper)))
-    , levels(parameters)
-    , time(parameters, levels.finest_cell_size)
+    , cavity(std::make_pair(to_point<dim>(parameters.cavity.cavity_lower),
+                            to_point<dim>(parameters.cavity.cavity_upper)))
+    , levels(parameters.mesh,
+             parameters.cavity,
+             dim,
+             parameters.time.target_cfl)
+    , time(parameters.time,
+           parameters.output,
+           parameters.material.gravity,
+           levels.finest_cell_size)
     , fields(triangulation,
              rheology.has_stress(),
-             parameters.periodic_directions())
-    , flow(parameters, triangulation)
+             parameters.cavity.periodic_directions())
+    , flow(parameters.flow_step(), triangulation)
     , statistics_file(output.path(), comm, !checkpoint.empty())
     , visualization(parameters.output_directory)
-    , checkpoints(parameters, comm, pcout)
+    , checkpoints(parameters.checkpoint,
+                  parameters.output_directory,
+                  comm,
+                  pcout)
   {
-    if (parameters.velocity_is_prescribed())
-      velocity = std::make_unique<PrescribedVelocity<dim>>(parameters);
+    if (parameters.transport.velocity_is_prescribed())
+      velocity = std::make_unique<PrescribedVelocity<dim>>(
+        parameters.transport.prescribed_velocity);
     else
-      velocity =
-        std::make_unique<FlowVelocity<dim>>(parameters, rheology, flow, timer);
-    if (!parameters.exact_final_level_set.empty())
-      exact_final_level_set = make_exact_final_level_set<dim>(parameters);
+      velocity = std::make_unique<FlowVelocity<dim>>(parameters.flow_step(),
+                                                     rheology,
+                                                     flow,
+                                                     timer);
+    if (!parameters.transport.exact_final_level_set.empty())
+      exact_final_level_set = make_exact_final_level_set<dim>(
+        parameters.transport.exact_final_level_set,
+        parameters.initial_liquid,
+        parameters.cavity);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::ofstream file(parameters.output_directory + "/parameters.prm");
@@ -114,12 +133,16 @@ namespace vefs
     {
       TimerOutput::Scope scope(timer, "initial state");
       make_cavity();
-      surface = std::make_unique<SurfaceTracker<dim>>(parameters,
-                                                      triangulation,
-                                                      levels,
-                                                      *locator,
-                                                      rheology.shear_modulus(),
-                                                      timer);
+      surface = std::make_unique<SurfaceTracker<dim>>(
+        parameters.mesh,
+        parameters.transport,
+        FootInterpolation(parameters.transport,
+                          rheology.has_stress(),
+                          rheology.shear_modulus()),
+        triangulation,
+        levels,
+        *locator,
+        timer);
       add_scene_columns();
       if (checkpoint.empty())
         set_initial_state();
@@ -166,7 +189,7 @@ namespace vefs
       }
     velocity->add_columns(statistics_file);
     surface->add_columns(statistics_file);
-    if (!parameters.probe_point.empty())
+    if (!parameters.postprocess.probe_point.empty())
       for (unsigned int d = 0; d < dim; ++d)
         statistics_file.add_column(std::string("probe_u_") + "xyz"[d],
                                    [d](const auto &s) {
@@ -179,8 +202,8 @@ namespace vefs
   Simulator<dim>::make_cavity()
   {
     std::vector<unsigned int> subdivisions(
-      parameters.coarse_subdivisions.begin(),
-      parameters.coarse_subdivisions.end());
+      parameters.cavity.coarse_subdivisions.begin(),
+      parameters.cavity.coarse_subdivisions.end());
     // colorize: boundary ids 0..2dim-1 for the walls x-, x+, y-, y+, z-, z+.
     GridGenerator::subdivided_hyper_rectangle(
       triangulation,
@@ -188,7 +211,7 @@ namespace vefs
       cavity.get_boundary_points().first,
       cavity.get_boundary_points().second,
       true);
-    for (const unsigned int d : parameters.periodic_directions())
+    for (const unsigned int d : parameters.cavity.periodic_directions())
       {
         std::vector<GridTools::PeriodicFacePair<
           typename parallel::distributed::Triangulation<dim>::cell_iterator>>
@@ -217,20 +240,23 @@ namespace vefs
           }
         return liquid ? 4 : 1;
       });
-    locator = std::make_unique<BoxMeshLocator<dim>>(triangulation,
-                                                    cavity,
-                                                    subdivisions,
-                                                    parameters.wall_type);
+    locator =
+      std::make_unique<BoxMeshLocator<dim>>(triangulation,
+                                            cavity,
+                                            subdivisions,
+                                            parameters.cavity.wall_type);
   }
 
   template <int dim>
   void
   Simulator<dim>::set_initial_state()
   {
-    const auto level_set        = make_initial_level_set<dim>(parameters);
-    const auto initial_velocity = make_initial_velocity<dim>(parameters);
-    const auto stress           = make_initial_stress<dim>(parameters);
-    triangulation.refine_global(parameters.min_level);
+    const auto level_set =
+      make_initial_level_set<dim>(parameters.initial_liquid, parameters.cavity);
+    const auto initial_velocity =
+      make_initial_velocity<dim>(parameters.initial_liquid);
+    const auto stress = make_initial_stress<dim>(parameters.initial_liquid);
+    triangulation.refine_global(parameters.mesh.min_level);
     fields.setup_dofs();
     // Refine toward the initial surface, evaluating it exactly on each mesh.
     // A level set whose slope varies may make a cell and its children want
@@ -238,7 +264,7 @@ namespace vefs
     for (unsigned int cycle = 0;; ++cycle)
       {
         fields.interpolate(*level_set, *initial_velocity, stress.get());
-        if (cycle == parameters.max_level ||
+        if (cycle == parameters.mesh.max_level ||
             !adapt_mesh(triangulation,
                         fields,
                         levels,
@@ -285,7 +311,8 @@ namespace vefs
       time.landed(velocity->time_step(time, statistics, fields));
     const double cfl = time.cfl_of(step.tau, statistics.max_velocity);
     // Checked before the step, while the state is still good.
-    const std::string problem = step_problem(parameters,
+    const std::string problem = step_problem(parameters.health_check,
+                                             parameters.time,
                                              time.step() + 1,
                                              step.tau,
                                              step.controlled,
@@ -345,7 +372,8 @@ namespace vefs
     statistics.cfl  = time.cfl();
     {
       TimerOutput::Scope scope(timer, "postprocessing");
-      measure_step(parameters,
+      measure_step(parameters.material,
+                   parameters.cavity,
                    fields,
                    domain,
                    surface->initial_volume(),
@@ -361,12 +389,12 @@ namespace vefs
           statistics.non_positive_conformation_points =
             stress.non_positive_points;
         }
-      if (!parameters.probe_point.empty())
+      if (!parameters.postprocess.probe_point.empty())
         {
           const Probe<dim> probe =
             probe_velocity(fields,
                            *locator,
-                           to_point<dim>(parameters.probe_point));
+                           to_point<dim>(parameters.postprocess.probe_point));
           statistics.probe_velocity = probe.velocity;
           // The columns are not zeroed outside: say once what they hold.
           if (!probe.in_liquid && !probe_outside_said)
@@ -397,7 +425,7 @@ namespace vefs
     {
       TimerOutput::Scope scope(timer, "health check");
       const std::string  problem =
-        state_problem(parameters,
+        state_problem(parameters.health_check,
                       fields,
                       statistics,
                       statistics_file.non_finite_column(statistics));

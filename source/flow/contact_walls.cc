@@ -50,7 +50,7 @@ namespace vefs
   } // namespace
 
   template <int dim>
-  ContactWalls<dim>::ContactWalls(const Parameters &parameters)
+  ContactWalls<dim>::ContactWalls(const CavityParameters &parameters)
   {
     for (unsigned int w = 0; w < 2 * dim; ++w)
       if (parameters.wall_type[w] == WallType::contact)

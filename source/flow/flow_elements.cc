@@ -34,10 +34,11 @@ namespace vefs
   } // namespace
 
   template <int dim>
-  FlowElements<dim>::FlowElements(const Parameters &parameters)
+  FlowElements<dim>::FlowElements(const FlowParameters &parameters,
+                                  const unsigned int    max_level)
     : child_vertex_weights(make_child_vertex_weights<dim>())
     , on_parents(parameters.flow_on_parents)
-    , finest_level(parameters.max_level)
+    , finest_level(max_level)
     , all_components(dim + 1)
   {
     std::iota(all_components.begin(), all_components.end(), 0);

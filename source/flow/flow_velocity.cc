@@ -8,10 +8,10 @@
 namespace vefs
 {
   template <int dim>
-  FlowVelocity<dim>::FlowVelocity(const Parameters    &parameters,
-                                  const Rheology<dim> &rheology,
-                                  StokesStep<dim>     &flow,
-                                  TimerOutput         &timer)
+  FlowVelocity<dim>::FlowVelocity(const FlowStepParameters &parameters,
+                                  const Rheology<dim>      &rheology,
+                                  StokesStep<dim>          &flow,
+                                  TimerOutput              &timer)
     : parameters(parameters)
     , rheology(rheology)
     , flow(flow)
@@ -23,14 +23,14 @@ namespace vefs
   std::string
   FlowVelocity<dim>::description() const
   {
-    switch (parameters.regime())
+    switch (parameters.material.regime())
       {
         case Regime::newtonian:
           return "Newtonian free-surface flow";
         case Regime::oldroyd_b:
           return "Oldroyd-B free-surface flow";
         case Regime::elastic_solid:
-          return parameters.solvent_viscosity > 0
+          return parameters.material.solvent_viscosity > 0
                    ? "Kelvin-Voigt elastic solid (neo-Hookean + viscous)"
                    : "neo-Hookean elastic solid";
       }
@@ -46,7 +46,7 @@ namespace vefs
         statistics.add_column("max_velocity_gradient", [](const auto &s) {
           return s.max_velocity_gradient;
         });
-        if (parameters.stress_update == StressUpdate::exponential &&
+        if (parameters.stress.stress_update == StressUpdate::exponential &&
             parameters.max_strain_per_step > 0)
           statistics.add_column("strain_limited_points", [](const auto &s) {
             return s.strain_limited_points;
@@ -127,16 +127,16 @@ namespace vefs
     // touch: loosely; the step ends with a full solve that leaves the set
     // unchanged too.
     unsigned int iterations = 0;
-    bool         full_solve =
-      !flow.touches_contact_walls() ||
-      parameters.contact_solver_tolerance <= parameters.solver_tolerance;
+    bool         full_solve = !flow.touches_contact_walls() ||
+                      parameters.solver.contact_solver_tolerance <=
+                        parameters.solver.solver_tolerance;
     for (unsigned int solves = 1;; ++solves)
       {
         {
           TimerOutput::Scope scope(timer, "3 diffusion: solve");
           iterations +=
-            flow.solve(full_solve ? parameters.solver_tolerance
-                                  : parameters.contact_solver_tolerance);
+            flow.solve(full_solve ? parameters.solver.solver_tolerance
+                                  : parameters.solver.contact_solver_tolerance);
         }
         if (full_solve && solves >= max_contact_iterations)
           break;
@@ -190,19 +190,19 @@ namespace vefs
                         domain,
                         rheology,
                         tau,
-                        parameters.extend_outside_stress);
+                        parameters.flow.extend_outside_stress);
         statistics.max_velocity_gradient = report.max_velocity_gradient;
         statistics.strain_limited_points = report.strain_limited_points;
       }
     const unsigned int layers =
-      std::max<unsigned int>(parameters.extension_layers,
+      std::max<unsigned int>(parameters.flow.extension_layers,
                              std::ceil(expected_cfl) + 2);
     // The vertices of cut cells outside the liquid keep the flow step's
     // velocity and the updated stress, or take the extension ('Outside
     // velocity/stress of cut cells').
     const bool extend_stress =
-      fields.has_stress() && parameters.extend_outside_stress;
-    if (parameters.extend_outside_velocity == extend_stress)
+      fields.has_stress() && parameters.flow.extend_outside_stress;
+    if (parameters.flow.extend_outside_velocity == extend_stress)
       {
         if (extend_stress)
           unflag_nodes_outside_liquid(fields, known);

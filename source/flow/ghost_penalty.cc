@@ -9,7 +9,7 @@
 namespace vefs
 {
   template <int dim>
-  GhostPenalty<dim>::GhostPenalty(const Parameters         &parameters,
+  GhostPenalty<dim>::GhostPenalty(const FlowStepParameters &parameters,
                                   const Rheology<dim>      &rheology,
                                   const FiniteElement<dim> &flow_fe,
                                   const FlowElements<dim>  &elements,
@@ -274,10 +274,10 @@ namespace vefs
   typename GhostPenalty<dim>::Weights
   GhostPenalty<dim>::face_weights(const double h, const double share) const
   {
-    const double rho   = parameters.density;
-    const double gamma = parameters.ghost_penalty * share;
+    const double rho   = parameters.material.density;
+    const double gamma = parameters.solver.ghost_penalty * share;
     const double tau_K =
-      parameters.pressure_stabilization / (rho / tau + 4 * mu / (h * h));
+      parameters.solver.pressure_stabilization / (rho / tau + 4 * mu / (h * h));
     return {gamma * (mu + rho * h * h / tau) * h,
             gamma * tau_K * h,
             gamma * (tau / rho + tau_K) * h};

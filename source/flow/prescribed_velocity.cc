@@ -6,8 +6,8 @@
 namespace vefs
 {
   template <int dim>
-  PrescribedVelocity<dim>::PrescribedVelocity(const Parameters &parameters)
-    : velocity(make_prescribed_velocity<dim>(parameters))
+  PrescribedVelocity<dim>::PrescribedVelocity(const std::string &expression)
+    : velocity(make_prescribed_velocity<dim>(expression))
   {
   }
 

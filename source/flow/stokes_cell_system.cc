@@ -3,7 +3,7 @@
 namespace vefs
 {
   template <int dim>
-  StokesCellSystem<dim>::StokesCellSystem(const Parameters         &parameters,
+  StokesCellSystem<dim>::StokesCellSystem(const FlowStepParameters &parameters,
                                           const Rheology<dim>      &rheology,
                                           const FiniteElement<dim> &flow_fe,
                                           const TransportedFields<dim> &fields,
@@ -30,11 +30,12 @@ namespace vefs
                  numbers::invalid_unsigned_int)
   {
     for (unsigned int d = 0; d < dim; ++d)
-      gravity[d] = parameters.gravity[d];
+      gravity[d] = parameters.material.gravity[d];
     double diameter_squared = 0;
     for (unsigned int d = 0; d < dim; ++d)
-      diameter_squared +=
-        std::pow(parameters.cavity_upper[d] - parameters.cavity_lower[d], 2);
+      diameter_squared += std::pow(parameters.cavity.cavity_upper[d] -
+                                     parameters.cavity.cavity_lower[d],
+                                   2);
     // A small mass term keeps the Schur Laplacian regular without a surface.
     regularization = 1e-3 / diameter_squared;
 
@@ -111,7 +112,7 @@ namespace vefs
     const typename DoFHandler<dim>::active_cell_iterator &cell)
   {
     const bool   with_stress = rheology.has_stress();
-    const double rho         = parameters.density;
+    const double rho         = parameters.material.density;
 
     const bool is_cut =
       domain.location(cell) == LiquidDomain<dim>::Location::cut;
@@ -120,7 +121,7 @@ namespace vefs
 
     const double h = elements.size(cell);
     const double tau_K =
-      parameters.pressure_stabilization / (rho / tau + 4 * mu / (h * h));
+      parameters.solver.pressure_stabilization / (rho / tau + 4 * mu / (h * h));
     schur_weight = tau / rho + tau_K;
 
     matrix        = 0;
@@ -242,7 +243,8 @@ namespace vefs
     const unsigned int               n_dofs = matrix.m();
     for (const unsigned int f : cell->face_indices())
       if (cell->at_boundary(f) &&
-          parameters.wall_type[cell->face(f)->boundary_id()] == WallType::open)
+          parameters.cavity.wall_type[cell->face(f)->boundary_id()] ==
+            WallType::open)
         {
           face_values.reinit(cell, f);
           for (const unsigned int q : face_values.quadrature_point_indices())
@@ -302,7 +304,7 @@ namespace vefs
   {
     surface_values.reinit(cell, domain.cut_cell(cell).surface);
     const unsigned int n_dofs = matrix.m();
-    const double       theta  = parameters.free_surface_stabilization;
+    const double       theta  = parameters.solver.free_surface_stabilization;
     for (unsigned int q = 0; q < surface_values.size(); ++q)
       {
         const double          JxW    = surface_values.JxW[q];
@@ -311,8 +313,8 @@ namespace vefs
         // The weight of the stabilisation: theta tau rho |g.n| where gravity
         // presses the surface back (g.n < 0, n pointing out of the liquid);
         // zero elsewhere, where the term would weaken the mass matrix.
-        const double weight =
-          theta * tau * parameters.density * std::max(-(gravity * normal), 0.);
+        const double weight = theta * tau * parameters.material.density *
+                              std::max(-(gravity * normal), 0.);
         for (unsigned int i = 0; i < n_dofs; ++i)
           for (unsigned int j = 0; j < n_dofs; ++j)
             if (component[i] == dim && component[j] == dim)

@@ -105,21 +105,23 @@ namespace vefs
 
   template <int dim>
   StokesStep<dim>::StokesStep(
-    const Parameters                                &parameters,
+    const FlowStepParameters                        &parameters,
     const parallel::distributed::Triangulation<dim> &triangulation)
     : parameters(parameters)
     , comm(triangulation.get_communicator())
     , dof_handler(triangulation)
-    , rheology(parameters)
-    , contact(parameters)
-    , elements(parameters)
+    , rheology(parameters.material,
+               parameters.stress,
+               parameters.max_strain_per_step)
+    , contact(parameters.cavity)
+    , elements(parameters.flow, parameters.max_level)
   {
     fe_collection.push_back(FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1));
     fe_collection.push_back(
       FESystem<dim>(FE_Nothing<dim>(), dim, FE_Nothing<dim>(), 1));
     for (unsigned int w = 0; w < 2 * dim; ++w)
-      if (parameters.wall_type[w] == WallType::velocity)
-        wall_velocity[w] = make_wall_velocity<dim>(parameters, w);
+      if (parameters.cavity.wall_type[w] == WallType::velocity)
+        wall_velocity[w] = make_wall_velocity<dim>(parameters.cavity, w);
   }
 
   template <int dim>
@@ -181,7 +183,7 @@ namespace vefs
   void
   StokesStep<dim>::check_periodic_liquid() const
   {
-    const auto directions = parameters.periodic_directions();
+    const auto directions = parameters.cavity.periodic_directions();
     if (directions.empty())
       return;
     bool mismatch = false;
@@ -226,7 +228,7 @@ namespace vefs
     constraints.clear();
     constraints.copy_from(interpolation);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    for (const unsigned int d : parameters.periodic_directions())
+    for (const unsigned int d : parameters.cavity.periodic_directions())
       DoFTools::make_periodicity_constraints(dof_handler,
                                              2 * d,
                                              2 * d + 1,
@@ -237,7 +239,7 @@ namespace vefs
     // A periodic pair may be split between ranks, and the walls it meets
     // constrain the same nodes: each rank must know the constraints of the
     // other side. (Several ranks allow one periodic pair only.)
-    if (!parameters.periodic_directions().empty() &&
+    if (!parameters.cavity.periodic_directions().empty() &&
         Utilities::MPI::n_mpi_processes(comm) > 1)
       constraints.make_consistent_in_parallel(dof_handler.locally_owned_dofs(),
                                               relevant_dofs,
@@ -355,7 +357,7 @@ namespace vefs
             {
               const types::boundary_id wall =
                 cell->parent()->face(f)->boundary_id();
-              const WallType type = parameters.wall_type[wall];
+              const WallType type = parameters.cavity.wall_type[wall];
               if (type != WallType::no_slip && type != WallType::slip &&
                   type != WallType::velocity)
                 continue;
@@ -396,7 +398,7 @@ namespace vefs
     for (unsigned int w = 0; w < 2 * dim; ++w)
       {
         const types::boundary_id id = w;
-        switch (parameters.wall_type[w])
+        switch (parameters.cavity.wall_type[w])
           {
             case WallType::no_slip:
               VectorTools::interpolate_boundary_values(
@@ -650,13 +652,13 @@ namespace vefs
     TrilinosWrappers::PreconditionAMG::AdditionalData velocity_data;
     velocity_data.elliptic              = true;
     velocity_data.higher_order_elements = false;
-    velocity_data.smoother_sweeps       = parameters.amg_smoother_sweeps;
+    velocity_data.smoother_sweeps       = parameters.solver.amg_smoother_sweeps;
     // With the flow on the parents the hierarchy of 0.02 is the weaker one
     // (why, not found): first step of the 3D ball at 2.5 mm, 22 Krylov
     // iterations with 0.02 against 17 with 0.05 (the finest cells: 15 and
     // 14; on 10 mm parents, 1 rank: 26 and 18).
     velocity_data.aggregation_threshold =
-      parameters.flow_on_parents ? 0.05 : 0.02;
+      parameters.flow.flow_on_parents ? 0.05 : 0.02;
     velocity_data.constant_modes = constant_modes;
     systems.velocity_amg =
       std::make_unique<TrilinosWrappers::PreconditionAMG>();
@@ -680,7 +682,7 @@ namespace vefs
     // same solve time; the 3D dam's (level 5) fall from 21.7 to 17.4.
     TrilinosWrappers::PreconditionAMG::AdditionalData laplace_data;
     laplace_data.elliptic        = true;
-    laplace_data.smoother_sweeps = parameters.amg_smoother_sweeps;
+    laplace_data.smoother_sweeps = parameters.solver.amg_smoother_sweeps;
     systems.laplace_amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
     systems.laplace_amg->initialize(schur_matrix, laplace_data);
   }
@@ -738,7 +740,7 @@ namespace vefs
       throw SolverError("the right-hand side of the Stokes step is not "
                         "finite; check 'Gravity', 'Material/Density', the "
                         "'Walls' velocities and 'Time/Time step'");
-    SolverControl             control(parameters.solver_max_iterations,
+    SolverControl             control(parameters.solver.solver_max_iterations,
                           std::max(tolerance * rhs_norm, 1e-300));
     SolverFGMRES<BlockVector> solver(control,
                                      SolverFGMRES<BlockVector>::AdditionalData(
@@ -756,7 +758,7 @@ namespace vefs
                 << failure.last_residual << " after " << failure.last_step
                 << " iterations (tolerance " << control.tolerance()
                 << " = 'Solver/"
-                << (tolerance == parameters.solver_tolerance
+                << (tolerance == parameters.solver.solver_tolerance
                       ? "Tolerance"
                       : "Contact tolerance")
                 << "' times the right-hand side norm). "
@@ -842,9 +844,9 @@ namespace vefs
           domain->has_liquid(cell))
         for (const unsigned int f : cell->face_indices())
           if (cell->at_boundary(f) &&
-              (parameters.wall_type[cell->face(f)->boundary_id()] ==
+              (parameters.cavity.wall_type[cell->face(f)->boundary_id()] ==
                  WallType::velocity ||
-               parameters.wall_type[cell->face(f)->boundary_id()] ==
+               parameters.cavity.wall_type[cell->face(f)->boundary_id()] ==
                  WallType::open))
             {
               face_values.reinit(cell, f);

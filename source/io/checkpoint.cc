@@ -1,7 +1,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/solution_transfer.h>
 
-#include <vefs/base/parameters.h>
 #include <vefs/io/checkpoint.h>
 
 #include <algorithm>

@@ -10,10 +10,46 @@
 
 namespace vefs
 {
-  CheckpointSchedule::CheckpointSchedule(const Parameters         &parameters,
-                                         const MPI_Comm            comm,
+  void
+  CheckpointParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Checkpoint");
+    {
+      prm.add_parameter("Interval steps",
+                        checkpoint_interval_steps,
+                        "Write a checkpoint (mesh, fields, time and "
+                        "statistics position, into <Output directory>/"
+                        "checkpoint) after every step whose number is a "
+                        "multiple of this; 0: never. A run continues from "
+                        "its last checkpoint with 'vefs --resume <Output "
+                        "directory>', also on another number of MPI ranks.",
+                        Patterns::Integer(0));
+      prm.add_parameter("Interval minutes",
+                        checkpoint_interval_minutes,
+                        "Also write a checkpoint after the step that ends "
+                        "this many minutes of wall time after the start (or "
+                        "the last checkpoint); 0: never. A SIGTERM or SIGINT "
+                        "always writes one after the current step.",
+                        Patterns::Double(0));
+      prm.add_parameter("Stop after steps",
+                        stop_after_steps,
+                        "If positive: after this many steps of this "
+                        "invocation (counted from the start or from the "
+                        "resumed step), write a checkpoint and stop with "
+                        "exit status 0 (for jobs with a wall-time limit: "
+                        "each job resumes the last one and does this many "
+                        "steps); 0: run to the end time.",
+                        Patterns::Integer(0));
+    }
+    prm.leave_subsection();
+  }
+
+  CheckpointSchedule::CheckpointSchedule(const CheckpointParameters &parameters,
+                                         const std::string &output_directory,
+                                         const MPI_Comm     comm,
                                          const ConditionalOStream &pcout)
     : parameters(parameters)
+    , output_directory(output_directory)
     , comm(comm)
     , pcout(pcout)
   {
@@ -47,7 +83,7 @@ namespace vefs
             << std::setprecision(3) << writing.wall_time() << " s" << std::endl;
     since_checkpoint.restart();
     const std::string directory =
-      parameters.output_directory + "/" + CheckpointNames::current;
+      output_directory + "/" + CheckpointNames::current;
     std::ostringstream where;
     where << "step " << step << " (t = " << time << ")";
     if (!problem.empty())
@@ -63,7 +99,7 @@ namespace vefs
       }
     const std::string resume_hint = "; the checkpoint is in " + directory +
                                     "/, continue with: vefs --resume " +
-                                    parameters.output_directory;
+                                    output_directory;
     if (signal != 0)
       return RunEnd{128 + signal,
                     std::string("stopped by ") + signal_name(signal) +

@@ -1,7 +1,6 @@
 #include <deal.II/base/mpi.h>
 
 #include <unistd.h>
-#include <vefs/base/parameters.h>
 #include <vefs/io/checkpoint.h>
 #include <vefs/io/output_directory.h>
 

@@ -1,5 +1,6 @@
 #include <deal.II/base/quadrature_lib.h>
 
+#include <vefs/base/parameter_entries.h>
 #include <vefs/io/postprocessing.h>
 #include <vefs/transport/free_surface.h>
 
@@ -55,9 +56,40 @@ namespace vefs
     }
   } // namespace
 
+  void
+  PostprocessParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Postprocess");
+    {
+      prm.add_parameter("Probe point",
+                        probe_point,
+                        "If not empty, a point (m) of the cavity where the "
+                        "velocity is written to the statistics every step "
+                        "(columns probe_u_x, probe_u_y, probe_u_z).",
+                        Patterns::List(Patterns::Double(), 0, 3));
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  PostprocessParameters::check(const unsigned int      dimension,
+                               const CavityParameters &cavity) const
+  {
+    require(probe_point.empty() || probe_point.size() == dimension,
+            "Postprocess/Probe point",
+            "needs " + std::to_string(dimension) +
+              " comma-separated numbers or nothing");
+    for (unsigned int d = 0; d < probe_point.size(); ++d)
+      require(probe_point[d] >= cavity.cavity_lower[d] &&
+                probe_point[d] <= cavity.cavity_upper[d],
+              "Postprocess/Probe point",
+              "must lie inside the cavity");
+  }
+
   template <int dim>
   void
-  measure_step(const Parameters             &parameters,
+  measure_step(const MaterialParameters     &material,
+               const CavityParameters       &cavity,
                const TransportedFields<dim> &fields,
                const LiquidDomain<dim>      &domain,
                const double                  initial_volume,
@@ -68,7 +100,7 @@ namespace vefs
       fields.dof_handler.get_triangulation().get_communicator();
     Tensor<1, dim> gravity;
     for (unsigned int d = 0; d < dim; ++d)
-      gravity[d] = parameters.gravity[d];
+      gravity[d] = material.gravity[d];
 
     // Volume, centroid and energies over the liquid as the flow step sees it.
     LiquidValues<dim> liquid_values(domain);
@@ -101,9 +133,9 @@ namespace vefs
               first_moment += values.JxW[q] * values.point[q];
               momentum += values.JxW[q] * u;
               kinetic +=
-                0.5 * parameters.density * u.norm_square() * values.JxW[q];
+                0.5 * material.density * u.norm_square() * values.JxW[q];
               potential -=
-                parameters.density * gravity * values.point[q] * values.JxW[q];
+                material.density * gravity * values.point[q] * values.JxW[q];
             }
         }
     s.kinetic_energy    = Utilities::MPI::sum(kinetic, comm);
@@ -122,14 +154,10 @@ namespace vefs
       }
 
     const unsigned int vertical = dim - 1;
-    s.floor_extent              = liquid_extent_on_wall(fields,
-                                           2 * vertical,
-                                           0,
-                                           parameters.cavity_lower[0]);
-    s.wall_height               = liquid_extent_on_wall(fields,
-                                          0,
-                                          vertical,
-                                          parameters.cavity_lower[vertical]);
+    s.floor_extent =
+      liquid_extent_on_wall(fields, 2 * vertical, 0, cavity.cavity_lower[0]);
+    s.wall_height =
+      liquid_extent_on_wall(fields, 0, vertical, cavity.cavity_lower[vertical]);
     s.cells = fields.dof_handler.get_triangulation().n_global_active_cells();
   }
 
@@ -170,14 +198,16 @@ namespace vefs
   }
 
   template void
-  measure_step<2>(const Parameters &,
+  measure_step<2>(const MaterialParameters &,
+                  const CavityParameters &,
                   const TransportedFields<2> &,
                   const LiquidDomain<2> &,
                   const double,
                   const double,
                   StepStatistics<2> &);
   template void
-  measure_step<3>(const Parameters &,
+  measure_step<3>(const MaterialParameters &,
+                  const CavityParameters &,
                   const TransportedFields<3> &,
                   const LiquidDomain<3> &,
                   const double,

@@ -1,6 +1,7 @@
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/utilities.h>
 
+#include <vefs/base/parameter_entries.h>
 #include <vefs/compat/box_q1_values.h>
 #include <vefs/fields/vertex_field_transfer.h>
 #include <vefs/transport/field_hermite.h>
@@ -11,20 +12,112 @@
 
 namespace vefs
 {
-  MeshLevels::MeshLevels(const Parameters &parameters)
+  void
+  MeshParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh refinement");
+    {
+      prm.add_parameter("Minimum level",
+                        min_level,
+                        "Refinement level of the empty part of the cavity.",
+                        Patterns::Integer(0, 20));
+      prm.add_parameter("Bulk level",
+                        bulk_level,
+                        "Refinement level of the liquid away from its free "
+                        "surface.",
+                        Patterns::Integer(0, 20));
+      prm.add_parameter("Maximum level",
+                        max_level,
+                        "Refinement level in the band around the free "
+                        "surface.",
+                        Patterns::Integer(0, 20));
+      prm.add_parameter("Band width",
+                        band_width,
+                        "Half width of the finest band around the free "
+                        "surface, in finest cells. With 'Band placement = "
+                        "widened' the band is widened to CFL + 2 cells (the "
+                        "target CFL, or the CFL number of the last step if "
+                        "larger) so that the surface cannot leave it within "
+                        "a step. Distances are "
+                        "estimated as psi / |grad psi| where the level set "
+                        "is steeper than a distance.",
+                        Patterns::Double(1));
+      add_selection(
+        prm,
+        "Band placement",
+        band_placement,
+        std::vector<std::pair<std::string, BandPlacement>>{
+          {"widened", BandPlacement::widened},
+          {"predicted", BandPlacement::predicted},
+          {"predicted, one change", BandPlacement::predicted_one_change}},
+        "How the band of finest cells keeps up with a moving surface. "
+        "widened: the band is widened by the CFL number, as 'Band width' "
+        "says, and the mesh is adapted once per step, after the advection. "
+        "predicted: before each advection the level set is traced along the "
+        "characteristics on the present mesh (a prediction of where the "
+        "surface will be) and the mesh is refined around the present and the "
+        "predicted surface; the band stays 'Band width' cells wide at any "
+        "CFL number, so large steps no longer fill the mesh with fine cells, "
+        "at the cost of one more trace and a few more adaptation cycles per "
+        "step. Cells within a step's local motion of the predicted surface "
+        "(and two finest cells more) are brought one level below the finest, "
+        "so that the next step's refinement takes one cycle there. "
+        "predicted, one change: as predicted, but the change before the "
+        "advection also coarsens the band of the present surface, which "
+        "the next mesh change would otherwise coarsen after the advection: "
+        "the advection reads the coarsened cells' fields at their former "
+        "children's vertices (kept for it), and the mesh changes once per "
+        "step instead of twice, again after the advection only where the "
+        "surface left the finest cells. Needs linear interpolation at the "
+        "feet ('Transport/Level set interpolation', 'Velocity interpolation' and 'Stress interpolation'). "
+        "Both predicted placements need 'Transport/Remap distance = 0'.");
+      prm.add_parameter(
+        "Band miss tolerance",
+        band_miss_tolerance,
+        "With 'Band placement = predicted, one change': the fraction of the "
+        "cells the surface crosses after the advection that may be coarser "
+        "than the finest level (the surface left the band there) before the "
+        "mesh changes again after the advection. Each change rebuilds the "
+        "whole mesh; up to this fraction, the flow step cuts those cells on "
+        "their coarser level and the next step's change before the advection "
+        "refines them. 0: the mesh changes whenever one cell is left "
+        "coarse.",
+        Patterns::Double(0, 1));
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  MeshParameters::check() const
+  {
+    require(band_miss_tolerance == 0 || band_in_one_change(),
+            "Mesh refinement/Band miss tolerance",
+            "applies to 'Band placement = predicted, one change' only (the "
+            "other placements adapt the mesh after every advection): leave "
+            "it 0 or choose that placement");
+    require(min_level <= bulk_level && bulk_level <= max_level,
+            "Mesh refinement/Bulk level",
+            "levels must satisfy Minimum level <= Bulk level <= Maximum "
+            "level");
+  }
+
+  MeshLevels::MeshLevels(const MeshParameters   &parameters,
+                         const CavityParameters &cavity,
+                         const unsigned int      dimension,
+                         const double            target_cfl)
     : min_level(parameters.min_level)
     , bulk_level(parameters.bulk_level)
     , max_level(parameters.max_level)
     , band_width(parameters.band_width)
-    , band_predicted(parameters.band_predicted)
+    , band_predicted(parameters.band_predicted())
   {
     finest_cell_size = std::numeric_limits<double>::max();
-    for (unsigned int d = 0; d < parameters.dimension; ++d)
+    for (unsigned int d = 0; d < dimension; ++d)
       finest_cell_size =
         std::min(finest_cell_size,
-                 (parameters.cavity_upper[d] - parameters.cavity_lower[d]) /
-                   parameters.coarse_subdivisions[d] / (1u << max_level));
-    expect_cfl(parameters.target_cfl);
+                 (cavity.cavity_upper[d] - cavity.cavity_lower[d]) /
+                   cavity.coarse_subdivisions[d] / (1u << max_level));
+    expect_cfl(target_cfl);
   }
 
   void

@@ -8,18 +8,20 @@ namespace vefs
 {
   template <int dim>
   SurfaceTracker<dim>::SurfaceTracker(
-    const Parameters                          &parameters,
+    const MeshParameters                      &mesh_parameters,
+    const TransportParameters                 &parameters,
+    const FootInterpolation                   &foot_interpolation,
     parallel::distributed::Triangulation<dim> &triangulation,
     MeshLevels                                &levels,
     const BoxMeshLocator<dim>                 &locator,
-    const double                               shear_modulus,
     TimerOutput                               &timer)
-    : parameters(parameters)
+    : mesh_parameters(mesh_parameters)
+    , parameters(parameters)
     , triangulation(triangulation)
     , levels(levels)
     , locator(locator)
     , timer(timer)
-    , foot_interpolation(parameters, shear_modulus)
+    , foot_interpolation(foot_interpolation)
     , level_set_history(parameters.remap_distance)
   {
   }
@@ -28,7 +30,7 @@ namespace vefs
   void
   SurfaceTracker<dim>::add_columns(StatisticsFile<dim> &statistics) const
   {
-    if (parameters.band_predicted)
+    if (mesh_parameters.band_predicted())
       statistics.add_column("advected_cells",
                             [](const auto &s) { return s.advected_cells; });
   }
@@ -42,7 +44,7 @@ namespace vefs
   {
     const double tau        = time.tau();
     statistics.mesh_changes = 0;
-    if (parameters.band_predicted)
+    if (mesh_parameters.band_predicted())
       {
         // Refine where the surface will be before it gets there: the band
         // need not be widened by the CFL number.
@@ -60,7 +62,7 @@ namespace vefs
                                   levels.max_level - levels.min_level,
                                   parameters.level_set_interpolation,
                                   surface_ahead,
-                                  parameters.band_in_one_change,
+                                  mesh_parameters.band_in_one_change(),
                                   coarsened_detail);
         statistics.advected_cells = triangulation.n_global_active_cells();
       }
@@ -106,11 +108,11 @@ namespace vefs
     // than 'Band miss tolerance' of its cells.
     TimerOutput::Scope scope(timer, "2 mesh adaptation");
     const SurfaceCells surface =
-      count_surface_cells(fields, parameters.max_level);
+      count_surface_cells(fields, mesh_parameters.max_level);
     statistics.coarse_surface_cells = surface.coarse;
     if (remap &&
-        (!parameters.band_in_one_change ||
-         surface.coarse > parameters.band_miss_tolerance * surface.total))
+        (!mesh_parameters.band_in_one_change() ||
+         surface.coarse > mesh_parameters.band_miss_tolerance * surface.total))
       {
         levels.expect_cfl(std::max(time.expected_cfl(),
                                    level_set_history.cells_between_remaps()));

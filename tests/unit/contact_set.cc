@@ -20,6 +20,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/grid/grid_generator.h>
 
+#include <vefs/core/parameters.h>
 #include <vefs/flow/stokes_step.h>
 #include <vefs/transport/liquid_domain.h>
 
@@ -51,20 +52,17 @@ namespace
   check(std::ostream &out)
   {
     const MPI_Comm   comm = MPI_COMM_WORLD;
-    ParameterHandler prm;
-    vefs::Parameters::declare(prm);
     vefs::Parameters parameters;
-    parameters.parse(prm);
-    parameters.dimension           = 2;
-    parameters.cavity_lower        = {-1, 0};
-    parameters.cavity_upper        = {1, 1};
-    parameters.coarse_subdivisions = {2, 1};
-    parameters.wall_type.fill(vefs::WallType::no_slip);
-    parameters.wall_type[2]     = vefs::WallType::contact;
-    parameters.gravity          = {0, 0};
-    parameters.relaxation_time  = 0;
-    parameters.flow_on_parents  = false;
-    parameters.solver_tolerance = 1e-10;
+    parameters.dimension                  = 2;
+    parameters.cavity.cavity_lower        = {-1, 0};
+    parameters.cavity.cavity_upper        = {1, 1};
+    parameters.cavity.coarse_subdivisions = {2, 1};
+    parameters.cavity.wall_type.fill(vefs::WallType::no_slip);
+    parameters.cavity.wall_type[2]      = vefs::WallType::contact;
+    parameters.material.gravity         = {0, 0};
+    parameters.material.relaxation_time = 0;
+    parameters.flow.flow_on_parents     = false;
+    parameters.solver.solver_tolerance  = 1e-10;
 
     parallel::distributed::Triangulation<2> triangulation(comm);
     GridGenerator::subdivided_hyper_rectangle(triangulation,
@@ -84,7 +82,7 @@ namespace
       ThrownBlocks());
     const vefs::LiquidDomain<2> domain(fields);
 
-    vefs::StokesStep<2> flow(parameters, triangulation);
+    vefs::StokesStep<2> flow(parameters.flow_step(), triangulation);
     const double        tau = 0.01;
     flow.setup(domain, tau);
     flow.assemble(fields, tau);
@@ -92,7 +90,7 @@ namespace
     bool         changed  = true;
     for (; changed && n_solves < 10; ++n_solves)
       {
-        flow.solve(parameters.solver_tolerance);
+        flow.solve(parameters.solver.solver_tolerance);
         changed = flow.update_contact(fields, tau);
       }
     out << "contact set settled: " << (changed ? "no" : "yes") << '\n';

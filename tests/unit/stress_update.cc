@@ -34,20 +34,21 @@ using namespace dealii;
 
 namespace
 {
-  vefs::Parameters
+  /** Relaxation time of the materials below. */
+  constexpr double relaxation_time = 0.5;
+
+  /** G = 4 Pa; alpha = 1: Oldroyd-B, 0: elastic solid. */
+  vefs::Rheology<2>
   material(const double alpha, const vefs::StressUpdate update)
   {
-    ParameterHandler prm;
-    vefs::Parameters::declare(prm);
-    vefs::Parameters parameters;
-    parameters.parse(prm);
-    parameters.polymer_viscosity   = 2;
-    parameters.relaxation_time     = 0.5;
-    parameters.alpha               = alpha;
-    parameters.stress_update       = update;
-    parameters.max_strain_per_step = 0;
-    parameters.stress_theta        = 1;
-    return parameters;
+    vefs::MaterialParameters material;
+    material.polymer_viscosity = 2;
+    material.relaxation_time   = relaxation_time;
+    material.alpha             = alpha;
+    vefs::StressParameters stress;
+    stress.stress_update = update;
+    stress.stress_theta  = 1;
+    return vefs::Rheology<2>(material, stress, 0);
   }
 
   double
@@ -139,8 +140,7 @@ namespace
     for (const auto update :
          {vefs::StressUpdate::linear, vefs::StressUpdate::exponential})
       {
-        const auto              parameters = material(1, update);
-        const vefs::Rheology<2> liquid(parameters);
+        const vefs::Rheology<2> liquid = material(1, update);
         SymmetricTensor<2, 2>   initial, sigma;
         initial[0][0] = 3;
         initial[0][1] = -1;
@@ -148,7 +148,7 @@ namespace
         sigma         = initial;
         for (unsigned int i = 0; i < n; ++i)
           sigma = liquid.updated_stress(sigma, Tensor<2, 2>(), tau);
-        const double lambda = parameters.relaxation_time;
+        const double lambda = relaxation_time;
         unit_test::check_below(
           out,
           std::string("Oldroyd-B at rest, ") +

@@ -1,12 +1,49 @@
 #ifndef vefs_time_control_h
 #define vefs_time_control_h
 
-#include <vefs/base/parameters.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <functional>
+#include <vector>
 
 namespace vefs
 {
+  /** The run's span and the control of its steps: subsection "Time". */
+  struct TimeParameters
+  {
+    void
+    declare(dealii::ParameterHandler &prm);
+
+    /** Throws InputError for an entry out of its range. */
+    void
+    check() const;
+
+    double end_time            = 0.18;
+    double time_step           = 0.001;
+    double target_cfl          = 0;
+    double max_strain_per_step = 0;
+    /**
+     * Whether the strain bound shortens the next step ('Strain bound =
+     * step'); otherwise only the exponential stress update scales the strain
+     * down where it is larger ('local').
+     */
+    bool         strain_bound_shortens_step = true;
+    unsigned int maximum_steps              = 100000;
+  };
+
+  /** When the visualization is written, and what the screen shows:
+   * subsection "Output". */
+  struct OutputParameters
+  {
+    void
+    declare(dealii::ParameterHandler &prm);
+
+    unsigned int output_interval      = 10;
+    double       output_time_interval = 0;
+    /** A progress line per step and the timer summary at the end. */
+    bool verbose = true;
+  };
+
   /** The length of a step, and the step the velocity alone allowed. */
   struct TimeStep
   {
@@ -27,8 +64,14 @@ namespace vefs
   class TimeControl
   {
   public:
-    /** @p finest_cell_size: the cell size of the CFL number. */
-    TimeControl(const Parameters &parameters, const double finest_cell_size);
+    /**
+     * @p gravity: the body force of the scene (the first step of a body at
+     * rest); @p finest_cell_size: the cell size of the CFL number.
+     */
+    TimeControl(const TimeParameters      &parameters,
+                const OutputParameters    &output,
+                const std::vector<double> &gravity,
+                const double               finest_cell_size);
 
     /** Continue the run at @p step and @p time (from a checkpoint). */
     void

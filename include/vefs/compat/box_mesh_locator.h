@@ -5,7 +5,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/grid/tria.h>
 
-#include <vefs/base/parameters.h>
+#include <vefs/base/cavity.h>
 
 #include <vector>
 

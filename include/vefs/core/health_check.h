@@ -1,14 +1,26 @@
 #ifndef vefs_health_check_h
 #define vefs_health_check_h
 
-#include <vefs/base/parameters.h>
 #include <vefs/base/statistics.h>
+#include <vefs/base/time_control.h>
 #include <vefs/fields/transported_fields.h>
 
 #include <string>
 
 namespace vefs
 {
+  /** The bounds of the checks below: subsection "Health check". */
+  struct HealthCheckParameters
+  {
+    void
+    declare(dealii::ParameterHandler &prm);
+
+    double max_volume_change = 0.2;
+    double max_cfl           = 50;
+    /** Smallest controlled step, as a fraction of 'Time/Time step'. */
+    double min_time_step_fraction = 1e-6;
+  };
+
   /**
    * The checks done at every step (doc/reliability.md: a run never ends with
    * exit 0 and results that are not finite). Each returns what is wrong, naming
@@ -27,12 +39,13 @@ namespace vefs
    * the end time and output times shorten it).
    */
   std::string
-  step_problem(const Parameters  &parameters,
-               const unsigned int step,
-               const double       tau,
-               const double       controlled_tau,
-               const double       cfl,
-               const double       max_velocity);
+  step_problem(const HealthCheckParameters &parameters,
+               const TimeParameters        &time,
+               const unsigned int           step,
+               const double                 tau,
+               const double                 controlled_tau,
+               const double                 cfl,
+               const double                 max_velocity);
 
   /**
    * After a step: the fields, the volume, and @p non_finite_statistic, the
@@ -41,7 +54,7 @@ namespace vefs
    */
   template <int dim>
   std::string
-  state_problem(const Parameters             &parameters,
+  state_problem(const HealthCheckParameters  &parameters,
                 const TransportedFields<dim> &fields,
                 const StepStatistics<dim>    &statistics,
                 const std::string            &non_finite_statistic);

@@ -6,9 +6,9 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
 
-#include <vefs/base/parameters.h>
 #include <vefs/base/time_control.h>
 #include <vefs/compat/box_mesh_locator.h>
+#include <vefs/core/parameters.h>
 #include <vefs/fields/transported_fields.h>
 #include <vefs/flow/stokes_step.h>
 #include <vefs/io/checkpoint_schedule.h>

@@ -7,7 +7,7 @@
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
-#include <vefs/base/parameters.h>
+#include <vefs/base/cavity.h>
 #include <vefs/flow/flow_elements.h>
 #include <vefs/flow/ghost_penalty.h>
 #include <vefs/flow/stokes_cell_system.h>
@@ -33,7 +33,7 @@ namespace vefs
   public:
     using BlockVector = TrilinosWrappers::MPI::BlockVector;
 
-    explicit ContactWalls(const Parameters &parameters);
+    explicit ContactWalls(const CavityParameters &parameters);
 
     bool
     empty() const

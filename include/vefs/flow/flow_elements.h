@@ -7,8 +7,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <vefs/base/parameters.h>
 #include <vefs/compat/box_q1_values.h>
+#include <vefs/flow/flow_parameters.h>
 #include <vefs/transport/liquid_domain.h>
 
 #include <map>
@@ -17,7 +17,7 @@
 namespace vefs
 {
   /**
-   * The elements of the flow's Q1-Q1 space ('Mesh refinement/Flow cells').
+   * The elements of the flow's Q1-Q1 space ('Flow/Flow cells').
    * With 'finest' every cell is its own element. With 'parents' the cells
    * of the finest level ('Maximum level') share their parent's element: the
    * flow's velocity and pressure are Q1 on the parents there, one level
@@ -41,7 +41,9 @@ namespace vefs
   public:
     using CellIterator = typename Triangulation<dim>::cell_iterator;
 
-    explicit FlowElements(const Parameters &parameters);
+    /** @p max_level: the level of the finest cells. */
+    FlowElements(const FlowParameters &parameters,
+                 const unsigned int    max_level);
 
     /** Whether the flow's element of @p cell is its parent. */
     bool

@@ -3,7 +3,7 @@
 
 #include <deal.II/base/timer.h>
 
-#include <vefs/base/parameters.h>
+#include <vefs/flow/flow_parameters.h>
 #include <vefs/flow/stokes_step.h>
 #include <vefs/stress/rheology.h>
 #include <vefs/transport/velocity_source.h>
@@ -22,10 +22,10 @@ namespace vefs
   {
   public:
     /** @p flow: the Stokes step, also read by the visualization. */
-    FlowVelocity(const Parameters    &parameters,
-                 const Rheology<dim> &rheology,
-                 StokesStep<dim>     &flow,
-                 TimerOutput         &timer);
+    FlowVelocity(const FlowStepParameters &parameters,
+                 const Rheology<dim>      &rheology,
+                 StokesStep<dim>          &flow,
+                 TimerOutput              &timer);
 
     std::string
     description() const override;
@@ -79,10 +79,10 @@ namespace vefs
                   const double             expected_cfl,
                   StepStatistics<dim>     &statistics);
 
-    const Parameters    &parameters;
-    const Rheology<dim> &rheology;
-    StokesStep<dim>     &flow;
-    TimerOutput         &timer;
+    const FlowStepParameters parameters;
+    const Rheology<dim>     &rheology;
+    StokesStep<dim>         &flow;
+    TimerOutput             &timer;
     /** Solves per step with contact walls, at the most. */
     static constexpr unsigned int max_contact_iterations = 10;
   };

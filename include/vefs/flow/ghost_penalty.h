@@ -5,8 +5,8 @@
 #include <deal.II/fe/fe_interface_values.h>
 #include <deal.II/lac/full_matrix.h>
 
-#include <vefs/base/parameters.h>
 #include <vefs/flow/flow_elements.h>
+#include <vefs/flow/flow_parameters.h>
 #include <vefs/stress/rheology.h>
 
 #include <functional>
@@ -46,7 +46,7 @@ namespace vefs
       next_to_walls
     };
 
-    GhostPenalty(const Parameters         &parameters,
+    GhostPenalty(const FlowStepParameters &parameters,
                  const Rheology<dim>      &rheology,
                  const FiniteElement<dim> &flow_fe,
                  const FlowElements<dim>  &elements,
@@ -169,7 +169,7 @@ namespace vefs
     void
     recall_face(const KeptFace &face);
 
-    const Parameters         &parameters;
+    const FlowStepParameters  parameters;
     const double              tau;
     const double              mu;
     const FiniteElement<dim> &flow_fe;

@@ -3,10 +3,10 @@
 
 #include <deal.II/base/function.h>
 
-#include <vefs/base/parameters.h>
 #include <vefs/transport/velocity_source.h>
 
 #include <memory>
+#include <string>
 
 namespace vefs
 {
@@ -21,7 +21,8 @@ namespace vefs
   class PrescribedVelocity : public VelocitySource<dim>
   {
   public:
-    PrescribedVelocity(const Parameters &parameters);
+    /** @p expression: 'Transport/Prescribed velocity'. */
+    explicit PrescribedVelocity(const std::string &expression);
 
     std::string
     description() const override;

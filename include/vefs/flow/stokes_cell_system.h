@@ -6,10 +6,10 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <vefs/base/parameters.h>
 #include <vefs/compat/box_q1_values.h>
 #include <vefs/fields/transported_fields.h>
 #include <vefs/flow/flow_elements.h>
+#include <vefs/flow/flow_parameters.h>
 #include <vefs/stress/rheology.h>
 #include <vefs/transport/liquid_domain.h>
 
@@ -39,7 +39,7 @@ namespace vefs
   class StokesCellSystem
   {
   public:
-    StokesCellSystem(const Parameters             &parameters,
+    StokesCellSystem(const FlowStepParameters     &parameters,
                      const Rheology<dim>          &rheology,
                      const FiniteElement<dim>     &flow_fe,
                      const TransportedFields<dim> &fields,
@@ -139,7 +139,7 @@ namespace vefs
       const typename DoFHandler<dim>::active_cell_iterator &cell,
       const double                                          h);
 
-    const Parameters             &parameters;
+    const FlowStepParameters      parameters;
     const Rheology<dim>          &rheology;
     const TransportedFields<dim> &fields;
     const LiquidDomain<dim>      &domain;

@@ -11,11 +11,11 @@
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <vefs/base/errors.h>
-#include <vefs/base/parameters.h>
 #include <vefs/compat/constraint_distribution.h>
 #include <vefs/fields/transported_fields.h>
 #include <vefs/flow/contact_walls.h>
 #include <vefs/flow/flow_elements.h>
+#include <vefs/flow/flow_parameters.h>
 #include <vefs/flow/ghost_penalty.h>
 #include <vefs/stress/rheology.h>
 #include <vefs/transport/liquid_domain.h>
@@ -42,7 +42,7 @@ namespace vefs
   public:
     using BlockVector = TrilinosWrappers::MPI::BlockVector;
 
-    StokesStep(const Parameters                                &parameters,
+    StokesStep(const FlowStepParameters                        &parameters,
                const parallel::distributed::Triangulation<dim> &triangulation);
 
     /** Flow unknowns on the cells of @p domain that hold liquid. */
@@ -172,13 +172,13 @@ namespace vefs
     void
     make_matrices();
 
-    const Parameters     &parameters;
-    const MPI_Comm        comm;
-    hp::FECollection<dim> fe_collection;
-    DoFHandler<dim>       dof_handler;
-    std::vector<IndexSet> owned_partitioning;
-    std::vector<IndexSet> relevant_partitioning;
-    IndexSet              relevant_dofs;
+    const FlowStepParameters parameters;
+    const MPI_Comm           comm;
+    hp::FECollection<dim>    fe_collection;
+    DoFHandler<dim>          dof_handler;
+    std::vector<IndexSet>    owned_partitioning;
+    std::vector<IndexSet>    relevant_partitioning;
+    IndexSet                 relevant_dofs;
     /**
      * The unknowns whose constraints and matrix rows this rank touches: the
      * locally relevant ones and, with 'Flow cells = parents', the far

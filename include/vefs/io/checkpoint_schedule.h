@@ -2,9 +2,8 @@
 #define vefs_checkpoint_schedule_h
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
-
-#include <vefs/base/parameters.h>
 
 #include <functional>
 #include <optional>
@@ -23,6 +22,19 @@ namespace vefs
     std::string message;
   };
 
+  /** When checkpoints are written: subsection "Checkpoint". */
+  struct CheckpointParameters
+  {
+    void
+    declare(dealii::ParameterHandler &prm);
+
+    unsigned int checkpoint_interval_steps = 0;
+    /** 0: no checkpoints by wall time. */
+    double checkpoint_interval_minutes = 60;
+    /** 0: no planned stop. */
+    unsigned int stop_after_steps = 0;
+  };
+
   /**
    * When a run writes a checkpoint (section 'Checkpoint'; README,
    * "Checkpoint and restart"): after every 'Interval steps' steps, after
@@ -32,9 +44,11 @@ namespace vefs
   class CheckpointSchedule
   {
   public:
-    CheckpointSchedule(const Parameters         &parameters,
-                       const MPI_Comm            comm,
-                       const ConditionalOStream &pcout);
+    /** @p output_directory: the run's, which holds the checkpoints. */
+    CheckpointSchedule(const CheckpointParameters &parameters,
+                       const std::string          &output_directory,
+                       const MPI_Comm              comm,
+                       const ConditionalOStream   &pcout);
 
     /**
      * After step @p step (at @p time), the @p steps_done -th of this
@@ -50,9 +64,10 @@ namespace vefs
                const std::function<std::string()> &write);
 
   private:
-    const Parameters         &parameters;
-    const MPI_Comm            comm;
-    const ConditionalOStream &pcout;
+    const CheckpointParameters &parameters;
+    const std::string           output_directory;
+    const MPI_Comm              comm;
+    const ConditionalOStream   &pcout;
     /** Wall time since the start or the last checkpoint. */
     Timer since_checkpoint;
   };

@@ -1,16 +1,33 @@
 #ifndef vefs_postprocessing_h
 #define vefs_postprocessing_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/vector.h>
 
-#include <vefs/base/parameters.h>
+#include <vefs/base/cavity.h>
 #include <vefs/base/statistics.h>
 #include <vefs/compat/box_mesh_locator.h>
 #include <vefs/fields/transported_fields.h>
+#include <vefs/stress/rheology.h>
 #include <vefs/transport/liquid_domain.h>
 
 namespace vefs
 {
+  /** What is measured beyond the statistics of every scene: subsection
+   * "Postprocess". */
+  struct PostprocessParameters
+  {
+    void
+    declare(dealii::ParameterHandler &prm);
+
+    /** Throws InputError for a probe point that is not in the cavity. */
+    void
+    check(const unsigned int dimension, const CavityParameters &cavity) const;
+
+    /** Empty: no probe. */
+    std::vector<double> probe_point = {};
+  };
+
   /** What a probe point sees. */
   template <int dim>
   struct Probe
@@ -35,7 +52,8 @@ namespace vefs
    */
   template <int dim>
   void
-  measure_step(const Parameters             &parameters,
+  measure_step(const MaterialParameters     &material,
+               const CavityParameters       &cavity,
                const TransportedFields<dim> &fields,
                const LiquidDomain<dim>      &domain,
                const double                  initial_volume,

@@ -1,15 +1,84 @@
 #ifndef vefs_rheology_h
 #define vefs_rheology_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
-#include <vefs/base/parameters.h>
 #include <vefs/stress/tensor_exponential.h>
+
+#include <vector>
 
 namespace vefs
 {
   using namespace dealii;
+
+  /** The regime selected by the material parameters (doc/method.md,
+   * "Equations"). */
+  enum class Regime
+  {
+    newtonian,
+    oldroyd_b,
+    elastic_solid
+  };
+
+  /**
+   * How the stress is advanced by the velocity gradient of the step, after
+   * the diffusion step (doc/method.md, "One time step", step 9).
+   */
+  enum class StressUpdate
+  {
+    linear,
+    exponential
+  };
+
+  /**
+   * The material and the body force on it: subsection "Material" and the
+   * top-level entry "Gravity". The defaults: water under the earth's
+   * gravity.
+   */
+  struct MaterialParameters
+  {
+    void
+    declare(dealii::ParameterHandler &prm);
+
+    /** Throws InputError for a material that no regime describes. */
+    void
+    check(const unsigned int dimension) const;
+
+    Regime
+    regime() const
+    {
+      if (relaxation_time == 0)
+        return Regime::newtonian;
+      return alpha == 1 ? Regime::oldroyd_b : Regime::elastic_solid;
+    }
+
+    /** Effective viscosity of the Newtonian regime. */
+    double
+    newtonian_viscosity() const
+    {
+      return solvent_viscosity + polymer_viscosity;
+    }
+
+    double              density           = 1000;
+    double              solvent_viscosity = 0.001;
+    double              polymer_viscosity = 0;
+    double              relaxation_time   = 0;
+    double              alpha             = 1;
+    std::vector<double> gravity           = {0, -9.81};
+  };
+
+  /** How the stress is updated after the flow step: subsection "Stress". */
+  struct StressParameters
+  {
+    void
+    declare(dealii::ParameterHandler &prm);
+
+    StressUpdate stress_update = StressUpdate::linear;
+    /** Weight of the new velocity in the stress of the diffusion step. */
+    double stress_theta = 1;
+  };
 
   /**
    * The constitutive law of doc/method.md ("Equations") as the diffusion
@@ -37,15 +106,18 @@ namespace vefs
   class Rheology
   {
   public:
-    explicit Rheology(const Parameters &parameters)
-      : regime(parameters.regime())
-      , eta_s(parameters.solvent_viscosity)
-      , eta_p(parameters.polymer_viscosity)
-      , lambda(parameters.relaxation_time)
-      , alpha(parameters.alpha)
-      , update(parameters.stress_update)
-      , max_strain(parameters.max_strain_per_step)
-      , theta(parameters.stress_theta)
+    /** @p max_strain: 'Time/Maximum strain per step' (0: none). */
+    Rheology(const MaterialParameters &material,
+             const StressParameters   &stress,
+             const double              max_strain)
+      : regime(material.regime())
+      , eta_s(material.solvent_viscosity)
+      , eta_p(material.polymer_viscosity)
+      , lambda(material.relaxation_time)
+      , alpha(material.alpha)
+      , update(stress.stress_update)
+      , max_strain(max_strain)
+      , theta(stress.stress_theta)
     {
     }
 

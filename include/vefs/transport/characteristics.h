@@ -3,10 +3,10 @@
 
 #include <deal.II/base/bounding_box.h>
 
-#include <vefs/base/parameters.h>
 #include <vefs/compat/box_mesh_locator.h>
 #include <vefs/fields/coarsened_detail.h>
 #include <vefs/fields/transported_fields.h>
+#include <vefs/transport/transport_parameters.h>
 
 #include <array>
 #include <utility>
@@ -23,12 +23,16 @@ namespace vefs
     bool   cubic_stress  = false;
     double shear_modulus = 1;
 
-    /** @p shear_modulus: Rheology::shear_modulus(), used with a stress. */
-    FootInterpolation(const Parameters &parameters, const double shear_modulus)
+    /**
+     * @p has_stress: whether the material carries a stress;
+     * @p shear_modulus: Rheology::shear_modulus(), used with a stress.
+     */
+    FootInterpolation(const TransportParameters &parameters,
+                      const bool                 has_stress,
+                      const double               shear_modulus)
       : level_set(parameters.level_set_interpolation)
       , velocity(parameters.velocity_interpolation)
-      , cubic_stress(parameters.cubic_stress_interpolation &&
-                     parameters.regime() != Regime::newtonian)
+      , cubic_stress(parameters.cubic_stress_interpolation && has_stress)
       , shear_modulus(cubic_stress ? shear_modulus : 1.)
     {
     }

@@ -1,9 +1,9 @@
 #ifndef vefs_level_set_history_h
 #define vefs_level_set_history_h
 
-#include <vefs/base/parameters.h>
 #include <vefs/compat/box_mesh_locator.h>
 #include <vefs/fields/transported_fields.h>
+#include <vefs/transport/transport_parameters.h>
 
 #include <array>
 #include <deque>
@@ -12,7 +12,7 @@
 namespace vefs
 {
   /**
-   * The level set between two remaps (entry 'Mesh refinement/Remap
+   * The level set between two remaps (entry 'Transport/Remap
    * distance'): every interpolation of the level set at the feet of the
    * characteristics smears a thin filament a little, so a transport that
    * interpolates at every step loses more the shorter the steps. Between

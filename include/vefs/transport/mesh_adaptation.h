@@ -1,12 +1,73 @@
 #ifndef vefs_mesh_adaptation_h
 #define vefs_mesh_adaptation_h
 
-#include <vefs/base/parameters.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <vefs/base/cavity.h>
 #include <vefs/fields/coarsened_detail.h>
 #include <vefs/fields/transported_fields.h>
+#include <vefs/transport/transport_parameters.h>
 
 namespace vefs
 {
+  /** How the band of finest cells keeps up with a moving surface. */
+  enum class BandPlacement
+  {
+    /** Widened by the CFL number; the mesh adapted after the advection. */
+    widened,
+    /** Refined ahead of the surface the characteristics predict. */
+    predicted,
+    /** The same, the present band coarsened in that one change. */
+    predicted_one_change
+  };
+
+  /**
+   * The refinement levels and the band of finest cells around the surface:
+   * subsection "Mesh refinement".
+   */
+  struct MeshParameters
+  {
+    void
+    declare(dealii::ParameterHandler &prm);
+
+    /** Throws InputError for levels out of order or a stray tolerance. */
+    void
+    check() const;
+
+    /**
+     * Whether the band is refined ahead of the surface before each advection
+     * ('Band placement = predicted') instead of widened by the CFL number.
+     */
+    bool
+    band_predicted() const
+    {
+      return band_placement != BandPlacement::widened;
+    }
+
+    /**
+     * Whether that change also coarsens the present band ('Band placement =
+     * predicted, one change'), the coarsened cells' fields kept for the
+     * advection (CoarsenedDetail, owned by the SurfaceTracker).
+     */
+    bool
+    band_in_one_change() const
+    {
+      return band_placement == BandPlacement::predicted_one_change;
+    }
+
+    unsigned int  min_level      = 2;
+    unsigned int  bulk_level     = 4;
+    unsigned int  max_level      = 6;
+    double        band_width     = 4;
+    BandPlacement band_placement = BandPlacement::widened;
+    /**
+     * The fraction of the surface's cells that may be left coarser than the
+     * finest level after the advection before the mesh changes again then
+     * ('Band miss tolerance').
+     */
+    double band_miss_tolerance = 0;
+  };
+
   /** Material id of cells with liquid, for the weighted partitioning. */
   constexpr types::material_id liquid_material_id = 1;
 
@@ -18,7 +79,11 @@ namespace vefs
   class MeshLevels
   {
   public:
-    MeshLevels(const Parameters &parameters);
+    /** @p target_cfl: 'Time/Target CFL', the first width of the band. */
+    MeshLevels(const MeshParameters   &parameters,
+               const CavityParameters &cavity,
+               const unsigned int      dimension,
+               const double            target_cfl);
 
     /**
      * Widen the band for steps of @p cfl finest cells (at least the

@@ -1,8 +1,8 @@
 #ifndef vefs_redistancing_h
 #define vefs_redistancing_h
 
-#include <vefs/base/parameters.h>
 #include <vefs/fields/transported_fields.h>
+#include <vefs/transport/transport_parameters.h>
 
 namespace vefs
 {

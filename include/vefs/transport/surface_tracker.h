@@ -4,7 +4,6 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
 
-#include <vefs/base/parameters.h>
 #include <vefs/base/statistics.h>
 #include <vefs/base/time_control.h>
 #include <vefs/compat/box_mesh_locator.h>
@@ -28,15 +27,12 @@ namespace vefs
   class SurfaceTracker
   {
   public:
-    /**
-     * @p shear_modulus: Rheology::shear_modulus(), for the limited cubic
-     * stress at the feet.
-     */
-    SurfaceTracker(const Parameters                          &parameters,
+    SurfaceTracker(const MeshParameters      &mesh_parameters,
+                   const TransportParameters &parameters,
+                   const FootInterpolation   &foot_interpolation,
                    parallel::distributed::Triangulation<dim> &triangulation,
                    MeshLevels                                &levels,
                    const BoxMeshLocator<dim>                 &locator,
-                   const double                               shear_modulus,
                    TimerOutput                               &timer);
 
     /** Register the statistics columns of the band placement. */
@@ -103,7 +99,8 @@ namespace vefs
     }
 
   private:
-    const Parameters                          &parameters;
+    const MeshParameters                      &mesh_parameters;
+    const TransportParameters                 &parameters;
     parallel::distributed::Triangulation<dim> &triangulation;
     MeshLevels                                &levels;
     const BoxMeshLocator<dim>                 &locator;

@@ -1,6 +1,7 @@
 #include <deal.II/base/numbers.h>
 
-#include <vefs/base/resource_limits.h>
+#include <vefs/base/errors.h>
+#include <vefs/core/resource_limits.h>
 
 #include <algorithm>
 #include <cmath>
@@ -46,18 +47,20 @@ namespace vefs
     {
       const unsigned int dim       = p.dimension;
       const double       unbounded = std::numeric_limits<double>::infinity();
-      if (std::find(p.wall_type.begin(),
-                    p.wall_type.end(),
-                    WallType::velocity) != p.wall_type.end())
+      if (std::find(p.cavity.wall_type.begin(),
+                    p.cavity.wall_type.end(),
+                    WallType::velocity) != p.cavity.wall_type.end())
         return unbounded;
-      if (p.initial_shape == "ball")
+      if (p.initial_liquid.initial_shape == "ball")
         return (dim == 2 ? dealii::numbers::PI : 4. / 3 * dealii::numbers::PI) *
-               std::pow(p.ball_radius, static_cast<int>(dim));
-      if (p.initial_shape == "box")
+               std::pow(p.initial_liquid.ball_radius, static_cast<int>(dim));
+      if (p.initial_liquid.initial_shape == "box")
         {
           double volume = 1;
           for (unsigned int d = 0; d < dim; ++d)
-            volume *= std::max(0., p.box_upper[d] - p.box_lower[d]);
+            volume *= std::max(0.,
+                               p.initial_liquid.box_upper[d] -
+                                 p.initial_liquid.box_lower[d]);
           return volume;
         }
       return unbounded;
@@ -72,10 +75,11 @@ namespace vefs
     std::vector<double> extent(dim);
     for (unsigned int d = 0; d < dim; ++d)
       {
-        extent[d] = p.cavity_upper[d] - p.cavity_lower[d];
-        coarse_cells *= p.coarse_subdivisions[d];
+        extent[d] = p.cavity.cavity_upper[d] - p.cavity.cavity_lower[d];
+        coarse_cells *= p.cavity.coarse_subdivisions[d];
         smallest_coarse_size =
-          std::min(smallest_coarse_size, extent[d] / p.coarse_subdivisions[d]);
+          std::min(smallest_coarse_size,
+                   extent[d] / p.cavity.coarse_subdivisions[d]);
       }
     // The cavity at the minimum level, and the liquid at the bulk level:
     // its volume is kept, unless a velocity wall lets liquid in or the
@@ -85,8 +89,8 @@ namespace vefs
     const double liquid_fraction =
       std::min(1., initial_liquid_volume(p) / cavity_volume);
     const double bulk =
-      coarse_cells * (std::pow(2., dim * p.min_level) +
-                      liquid_fraction * std::pow(2., dim * p.bulk_level));
+      coarse_cells * (std::pow(2., dim * p.mesh.min_level) +
+                      liquid_fraction * std::pow(2., dim * p.mesh.bulk_level));
     // ... and its surface, at most about the largest cross-section of the
     // cavity, carries a band of finest cells as wide as the band width
     // (or CFL + 2) on either side, twice that with the grading around it.
@@ -96,10 +100,11 @@ namespace vefs
     double cross_section = 1;
     for (unsigned int d = 1; d < dim; ++d)
       cross_section *= extent[d];
-    const double h     = smallest_coarse_size / std::pow(2., p.max_level);
-    const double reach = std::max(p.band_width, p.target_cfl + 2);
-    const double width =
-      p.band_predicted ? p.band_width + reach / std::pow(2., dim) : reach;
+    const double h     = smallest_coarse_size / std::pow(2., p.mesh.max_level);
+    const double reach = std::max(p.mesh.band_width, p.time.target_cfl + 2);
+    const double width = p.mesh.band_predicted()
+                           ? p.mesh.band_width + reach / std::pow(2., dim)
+                           : reach;
     const double band =
       2 * 2 * width * cross_section / std::pow(h, static_cast<int>(dim) - 1);
     return bulk + band;
@@ -114,12 +119,13 @@ namespace vefs
   void
   check_resources(const Parameters &p)
   {
-    const double steps = std::ceil(p.end_time / p.time_step * (1 - 1e-12));
-    if (steps > p.maximum_steps)
+    const double steps =
+      std::ceil(p.time.end_time / p.time.time_step * (1 - 1e-12));
+    if (steps > p.time.maximum_steps)
       throw InputError(
         "entry 'Time/Time step': 'Time/End time' / 'Time/Time step' = " +
         rounded(steps) + " steps, more than 'Time/Maximum steps' = " +
-        std::to_string(p.maximum_steps) +
+        std::to_string(p.time.maximum_steps) +
         "; raise the time step (with 'Time/Target CFL' it is the largest "
         "step allowed) or 'Time/Maximum steps'");
 
@@ -129,9 +135,9 @@ namespace vefs
     if (memory > 0 && needed > memory)
       throw InputError(
         "entry 'Mesh refinement/Maximum level': the levels (bulk " +
-        std::to_string(p.bulk_level) + ", maximum " +
-        std::to_string(p.max_level) + ") may need about " + rounded(cells) +
-        " cells and " + rounded(needed / 1e9) +
+        std::to_string(p.mesh.bulk_level) + ", maximum " +
+        std::to_string(p.mesh.max_level) + ") may need about " +
+        rounded(cells) + " cells and " + rounded(needed / 1e9) +
         " GB of memory, more than the " + rounded(memory / 1e9) +
         " GB available (MemAvailable in /proc/meminfo); lower "
         "'Mesh refinement/Maximum level' or 'Mesh refinement/Bulk level'");

@@ -1,7 +1,7 @@
 #ifndef vefs_resource_limits_h
 #define vefs_resource_limits_h
 
-#include <vefs/base/parameters.h>
+#include <vefs/core/parameters.h>
 
 namespace vefs
 {

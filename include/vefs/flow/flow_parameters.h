@@ -1,0 +1,74 @@
+#ifndef vefs_flow_parameters_h
+#define vefs_flow_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <vefs/base/cavity.h>
+#include <vefs/stress/rheology.h>
+
+namespace vefs
+{
+  /**
+   * Where the flow is solved and what the characteristics see beyond it:
+   * subsection "Flow".
+   */
+  struct FlowParameters
+  {
+    void
+    declare(dealii::ParameterHandler &prm);
+
+    /** Whether the flow's unknowns on the finest cells are their parents'
+     * ('Flow cells = parents'), see FlowElements. */
+    bool         flow_on_parents  = false;
+    unsigned int extension_layers = 4;
+    /**
+     * Whether the vertices of cut cells outside the liquid take the extended
+     * velocity instead of the flow step's ('Outside velocity of cut cells').
+     */
+    bool extend_outside_velocity = false;
+    /** Whether they take the extended stress ('Outside stress of cut cells').
+     */
+    bool extend_outside_stress = false;
+  };
+
+  /** The linear solves and the stabilizations: subsection "Solver". */
+  struct SolverParameters
+  {
+    void
+    declare(dealii::ParameterHandler &prm);
+
+    /** Throws InputError for a tolerance no solve can reach. */
+    void
+    check() const;
+
+    double solver_tolerance = 1e-8;
+    /** Of the solves while the contact set changes ('Contact tolerance'). */
+    double       contact_solver_tolerance = 1e-4;
+    unsigned int solver_max_iterations    = 1000;
+    /** Smoother sweeps of both AMG V-cycles (velocity, Schur Laplacian). */
+    unsigned int amg_smoother_sweeps        = 4;
+    double       pressure_stabilization     = 0.25;
+    double       free_surface_stabilization = 0;
+    double       ghost_penalty              = 0.1;
+  };
+
+  /**
+   * What the flow step reads of the scene: the entries of the modules it
+   * works with, and the two numbers it needs from the mesh and the time
+   * control.
+   */
+  struct FlowStepParameters
+  {
+    const CavityParameters   &cavity;
+    const MaterialParameters &material;
+    const StressParameters   &stress;
+    const FlowParameters     &flow;
+    const SolverParameters   &solver;
+    /** 'Mesh refinement/Maximum level': the level of the finest cells. */
+    unsigned int max_level;
+    /** 'Time/Maximum strain per step' (0: none). */
+    double max_strain_per_step;
+  };
+} // namespace vefs
+
+#endif

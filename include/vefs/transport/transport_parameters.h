@@ -1,0 +1,61 @@
+#ifndef vefs_transport_parameters_h
+#define vefs_transport_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace vefs
+{
+  /** How the level set is interpolated at the feet of the characteristics. */
+  enum class LevelSetInterpolation
+  {
+    linear,
+    cubic,
+    limited_cubic,
+    gradient_augmented
+  };
+
+  /** How the velocity is interpolated at the feet of the characteristics. */
+  enum class VelocityInterpolation
+  {
+    linear,
+    cubic,
+    limited_cubic
+  };
+
+  /**
+   * How the fields are carried along the characteristics and the surface
+   * kept (doc/transport.md): subsection "Transport". Its last two entries
+   * make a transport-only scene: a given velocity instead of the flow, and
+   * the exact shape at the end.
+   */
+  struct TransportParameters
+  {
+    void
+    declare(dealii::ParameterHandler &prm);
+
+    LevelSetInterpolation level_set_interpolation =
+      LevelSetInterpolation::linear;
+    VelocityInterpolation velocity_interpolation =
+      VelocityInterpolation::linear;
+    /** The stress at the feet by limited cubic ('Stress interpolation'). */
+    bool cubic_stress_interpolation = false;
+    /** Finest cells the surface moves between remaps; 0: every step. */
+    double       remap_distance        = 0;
+    unsigned int redistancing_interval = 1;
+    bool         volume_correction     = true;
+
+    std::string prescribed_velocity   = "";
+    std::string exact_final_level_set = "";
+
+    /** Transport only: the velocity is given and the flow is not solved. */
+    bool
+    velocity_is_prescribed() const
+    {
+      return !prescribed_velocity.empty();
+    }
+  };
+} // namespace vefs
+
+#endif

@@ -1,0 +1,217 @@
+#include <deal.II/base/utilities.h>
+
+#include <vefs/base/expression_check.h>
+#include <vefs/base/parameter_entries.h>
+#include <vefs/core/parameters.h>
+#include <vefs/core/resource_limits.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace vefs
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /**
+     * The times at which the run evaluates time-dependent expressions:
+     * every step and mid-step with the fixed time step, else (or beyond
+     * 200 steps) 400 equal parts of the run.
+     */
+    std::vector<double>
+    run_times(const Parameters &p)
+    {
+      const double steps = std::ceil(p.time.end_time / p.time.time_step);
+      const double dt =
+        steps <= 200 ? p.time.time_step / 2 : p.time.end_time / 400;
+      std::vector<double> times;
+      // Multiples, not sums, of dt: the step times exactly.
+      for (unsigned int k = 0; k * dt < p.time.end_time; ++k)
+        times.push_back(k * dt);
+      times.push_back(p.time.end_time);
+      return times;
+    }
+
+    /** Every muParser expression the scene uses, with its entry name. */
+    template <int dim>
+    void
+    check_expressions(const Parameters &p)
+    {
+      const ExpressionSampling cavity{p.cavity.cavity_lower,
+                                      p.cavity.cavity_upper,
+                                      {0.}};
+      ExpressionSampling       over_time = cavity;
+      over_time.times                    = run_times(p);
+      for (unsigned int w = 0; w < 2 * dim; ++w)
+        if (p.cavity.wall_type[w] == WallType::velocity)
+          {
+            // Sampled on the wall only: a pole beyond it does no harm.
+            ExpressionSampling wall = over_time;
+            const double       x    = w % 2 == 0 ? p.cavity.cavity_lower[w / 2]
+                                                 : p.cavity.cavity_upper[w / 2];
+            wall.lower[w / 2] = wall.upper[w / 2] = x;
+            check_expression<dim>(p.cavity.wall_velocity[w],
+                                  dim,
+                                  "Walls/" + wall_names[w] + " velocity",
+                                  wall);
+          }
+      check_expression<dim>(p.initial_liquid.initial_velocity,
+                            dim,
+                            "Initial liquid/Velocity",
+                            cavity);
+      if (!p.initial_liquid.initial_stress.empty())
+        check_expression<dim>(p.initial_liquid.initial_stress,
+                              dim * (dim + 1) / 2,
+                              "Initial liquid/Stress",
+                              cavity);
+      if (p.initial_liquid.initial_shape == "expression")
+        check_expression<dim>(p.initial_liquid.level_set_expression,
+                              1,
+                              "Initial liquid/Level set expression",
+                              cavity);
+      if (p.transport.velocity_is_prescribed())
+        check_expression<dim>(p.transport.prescribed_velocity,
+                              dim,
+                              "Transport/Prescribed velocity",
+                              over_time);
+      if (!p.transport.exact_final_level_set.empty() &&
+          p.transport.exact_final_level_set != "initial")
+        check_expression<dim>(p.transport.exact_final_level_set,
+                              1,
+                              "Transport/Exact final level set",
+                              {p.cavity.cavity_lower,
+                               p.cavity.cavity_upper,
+                               {p.time.end_time}});
+    }
+  } // namespace
+
+  const std::vector<MovedEntry> Parameters::moved_entries = {
+    {"Mesh refinement", "Transport", "Level set interpolation"},
+    {"Mesh refinement", "Transport", "Velocity interpolation"},
+    {"Mesh refinement", "Transport", "Stress interpolation"},
+    {"Mesh refinement", "Transport", "Remap distance"},
+    {"Mesh refinement", "Transport", "Redistancing interval"},
+    {"Mesh refinement", "Transport", "Volume correction"},
+    {"Mesh refinement", "Flow", "Flow cells"},
+    {"Mesh refinement", "Flow", "Extension layers"},
+    {"Mesh refinement", "Flow", "Outside velocity of cut cells"},
+    {"Mesh refinement", "Flow", "Outside stress of cut cells"},
+    {"Solver", "Stress", "Stress update"},
+    {"Solver", "Stress", "Stress theta"}};
+
+  void
+  Parameters::declare(ParameterHandler &prm)
+  {
+    prm.add_parameter("Dimension",
+                      dimension,
+                      "Space dimension of the scene: 2 or 3.",
+                      Patterns::Integer(2, 3));
+    prm.add_parameter("Output directory",
+                      output_directory,
+                      "Directory for the statistics, the parameters as run "
+                      "and the visualization files. Created if missing.",
+                      Patterns::DirectoryName());
+    time.declare(prm);
+    health_check.declare(prm);
+    cavity.declare(prm);
+    material.declare(prm);
+    stress.declare(prm);
+    initial_liquid.declare(prm);
+    mesh.declare(prm);
+    transport.declare(prm);
+    flow.declare(prm);
+    solver.declare(prm);
+    postprocess.declare(prm);
+    checkpoint.declare(prm);
+    output.declare(prm);
+  }
+
+  void
+  Parameters::check_for_ranks(const unsigned int n_ranks) const
+  {
+    const auto periodic = cavity.periodic_directions();
+    if (periodic.empty() || n_ranks == 1)
+      return;
+    // deal.II 9.4 does not make the constraints of a cell corner shared by
+    // two periodic pairs consistent across ranks, and in 3D the flow of a
+    // periodic scene differs on 2 ranks already with one pair (measured:
+    // 0.7157 against 0.7143 m/s after one step of a 3D shear flow).
+    require(periodic.size() == 1,
+            "Walls/" + wall_names[2 * periodic.back()],
+            "periodic walls in more than one direction need a single MPI "
+            "rank in this version; allowed on several ranks: one periodic "
+            "pair in 2D");
+    require(dimension == 2,
+            "Walls/" + wall_names[2 * periodic.back()],
+            "periodic walls in 3D need a single MPI rank in this version; "
+            "allowed on several ranks: one periodic pair in 2D");
+  }
+
+  void
+  Parameters::check()
+  {
+    warnings.clear();
+    time.check();
+    cavity.check(dimension);
+    material.check(dimension);
+    solver.check();
+    postprocess.check(dimension, cavity);
+    initial_liquid.check(dimension, cavity, warnings);
+    mesh.check();
+
+    // The cross-check: what one module's entries ask of another's.
+    require(material.regime() != Regime::newtonian ||
+              initial_liquid.initial_stress.empty(),
+            "Initial liquid/Stress",
+            "a Newtonian liquid (relaxation time 0) has no extra stress; "
+            "leave it empty or give a positive relaxation time");
+    require(!transport.velocity_is_prescribed() ||
+              initial_liquid.initial_stress.empty(),
+            "Initial liquid/Stress",
+            "with a prescribed velocity the flow (and its stress) is not "
+            "solved; leave it empty");
+    require(time.strain_bound_shortens_step ||
+              (stress.stress_update == StressUpdate::exponential &&
+               time.max_strain_per_step > 0),
+            "Time/Strain bound",
+            "'local' scales the strain down in the exponential stress update "
+            "only: it needs 'Stress/Stress update = exponential' and a "
+            "positive 'Time/Maximum strain per step'");
+    require(!mesh.band_predicted() || transport.remap_distance == 0,
+            "Mesh refinement/Band placement",
+            "'predicted' adapts the mesh before every advection; between "
+            "remaps the mesh stays: it needs 'Transport/Remap distance = 0'");
+    require(
+      !mesh.band_in_one_change() ||
+        (transport.level_set_interpolation == LevelSetInterpolation::linear &&
+         transport.velocity_interpolation == VelocityInterpolation::linear &&
+         !transport.cubic_stress_interpolation),
+      "Mesh refinement/Band placement",
+      "'predicted, one change' keeps the Q1 fields of the coarsened "
+      "cells only: it needs 'linear' for 'Level set interpolation', "
+      "'Velocity interpolation' and 'Stress interpolation' (in "
+      "'Transport')");
+    require(!flow.flow_on_parents || cavity.periodic_directions().empty(),
+            "Flow/Flow cells",
+            "'parents' is not implemented with periodic walls: use "
+            "'finest'");
+    require(!flow.flow_on_parents ||
+              (mesh.max_level > 0 && mesh.bulk_level + 1 >= mesh.max_level),
+            "Flow/Flow cells",
+            "'parents' needs 'Mesh refinement/Bulk level' = 'Mesh "
+            "refinement/Maximum level' - 1 (or equal to it, and at least 1): "
+            "the flow's cells then all lie on one level");
+
+    check_resources(*this);
+
+    if (dimension == 2)
+      check_expressions<2>(*this);
+    else
+      check_expressions<3>(*this);
+  }
+} // namespace vefs

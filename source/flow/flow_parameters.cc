@@ -1,0 +1,159 @@
+#include <vefs/base/parameter_entries.h>
+#include <vefs/flow/flow_parameters.h>
+
+namespace vefs
+{
+  using namespace dealii;
+
+  void
+  FlowParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Flow");
+    {
+      add_selection(
+        prm,
+        "Flow cells",
+        flow_on_parents,
+        std::vector<std::pair<std::string, bool>>{{"finest", false},
+                                                  {"parents", true}},
+        "The cells of the flow's velocity and pressure. finest: every cell. "
+        "parents: where the mesh is at 'Maximum level', the flow's unknowns "
+        "are Q1 on the parents of the finest cells, one level coarser than "
+        "the transport (as the seed's 5 mm flow cells over 1 mm transport "
+        "cells), while the liquid domain is still cut out of the finest "
+        "cells. About 2^dim times fewer flow unknowns in the band around the "
+        "surface. Needs 'Mesh refinement/Bulk level' = 'Maximum level' - 1; not with "
+        "periodic walls.");
+      prm.add_parameter("Extension layers",
+                        extension_layers,
+                        "Number of cell layers beyond the liquid into which "
+                        "the velocity is extended for the characteristics; "
+                        "at least CFL + 2 layers are used, as for the "
+                        "band.",
+                        Patterns::Integer(1, 100));
+      add_selection(
+        prm,
+        "Outside velocity of cut cells",
+        extend_outside_velocity,
+        std::vector<std::pair<std::string, bool>>{{"solution", false},
+                                                  {"extension", true}},
+        "The velocity that the characteristics see at the vertices of cut "
+        "cells that lie outside the liquid (psi > 0): solution (the flow "
+        "step's, which its elements extrapolate smoothly: best for liquids; "
+        "with extension the standing wave's frequency error goes from 0.74 % "
+        "to -0.84 % and its amplitude from a 2.2 % loss to a 5.2 % gain per "
+        "period, the broken dam's largest height error from 0.031 to 0.039) "
+        "or extension (the average of the liquid nodes around, as in the "
+        "extension layers beyond). Where a free surface meets a no-slip "
+        "wall, only the ghost penalty and a sliver of liquid set the "
+        "solution there, and in an elastic body held by that wall it feeds "
+        "a growing local mode: the 3D beam of prm/oscillating_beam.prm "
+        "stalls at t = 0.17 s with solution and runs to the end with "
+        "extension (doc/bouncing_ball.md). The stress at these vertices: "
+        "'Outside stress of cut cells'.");
+      add_selection(
+        prm,
+        "Outside stress of cut cells",
+        extend_outside_stress,
+        std::vector<std::pair<std::string, bool>>{{"updated", false},
+                                                  {"extension", true}},
+        "The stress at the vertices of cut cells that lie outside the liquid "
+        "(psi > 0): updated (the stress update carries it by the cut cell's "
+        "mean velocity gradient, bounded by 10 times the stretch of the "
+        "cell's liquid nodes) or extension (the average of the liquid nodes "
+        "around, as in the extension layers beyond). Nothing in the flow "
+        "step resists the stretching of these vertices, and their stress "
+        "enters the liquid through the Q1 interpolation: with 'updated' "
+        "this is a source of energy. It shows once the scheme stops damping "
+        "('Stress/Stress theta' = 0.5): the 2D stiff ball resting on the "
+        "floor after its second contact gained 31.5 J/m in 0.15 s with "
+        "updated and lost 0.9 J/m with extension "
+        "(doc/bouncing_ball.md).");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  SolverParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    {
+      prm.add_parameter("Tolerance",
+                        solver_tolerance,
+                        "Relative residual reduction of the Krylov solver.",
+                        Patterns::Double(0, 1));
+      prm.add_parameter(
+        "Contact tolerance",
+        contact_solver_tolerance,
+        "With contact walls: the relative residual reduction of the solves "
+        "while the contact set still changes. They only have to tell which "
+        "nodes touch; once a solve leaves the set unchanged the step is "
+        "solved again, from there, to 'Tolerance' (and the set checked "
+        "again). At or below 'Tolerance': every contact iteration is solved "
+        "fully.",
+        Patterns::Double(0, 1));
+      prm.add_parameter("Maximum iterations",
+                        solver_max_iterations,
+                        "Iterations after which the Krylov solver gives up "
+                        "and stops the run.",
+                        Patterns::Integer(1));
+      prm.add_parameter("AMG smoother sweeps",
+                        amg_smoother_sweeps,
+                        "Smoother sweeps per level of the AMG V-cycles for "
+                        "the velocity block and for the pressure Laplacian "
+                        "of the Schur approximation. The velocity block is "
+                        "dominated by the mass matrix rho/tau M when "
+                        "rho h^2/(tau mu) is large, and then the smoother does "
+                        "most of the work: 4 keeps the iteration counts flat "
+                        "under refinement (measured: 2D broken dam, levels "
+                        "5-9; 3D; doc/broken_dam.md).",
+                        Patterns::Integer(1, 20));
+      prm.add_parameter("Pressure stabilization",
+                        pressure_stabilization,
+                        "Factor c of the PSPG parameter of the Q1-Q1 "
+                        "element, tau_K = c / (rho/tau + 4 mu / h_K^2). "
+                        "Its consistency error grows with c where the "
+                        "pressure gradient is large: the stiff ball's "
+                        "lift-off and rebound only settled under refinement "
+                        "with 0.05 (its scene's value; 10-20 % more Krylov "
+                        "iterations at 0.02-0.01; doc/bouncing_ball.md).",
+                        Patterns::Double(0));
+      prm.add_parameter(
+        "Free surface stabilization",
+        free_surface_stabilization,
+        "Factor theta in [0, 1] of the free-surface stabilisation (Kaus et "
+        "al., PEPI 181, 2010; ASPECT's free surface stabilization theta): "
+        "the flow step sees the hydrostatic load change of the surface "
+        "moving by tau u.n within the step, theta tau rho |g.n| (u.n)(v.n) "
+        "on the free surface where gravity presses it back. 0: the surface "
+        "is explicit, stable for tau below about 2 (h / (pi |g|))^(1/2), h "
+        "the finest cell (0.010 s at h = 0.8 mm); 0.5 removes that limit "
+        "but damps surface waves of frequency omega by about "
+        "exp(-pi omega tau / 2) per period (see doc/standing_wave.md).",
+        Patterns::Double(0, 1));
+      prm.add_parameter("Ghost penalty",
+                        ghost_penalty,
+                        "Factor gamma of the ghost penalty on the faces of "
+                        "cells cut by the free surface (see doc/method.md): "
+                        "it keeps a cell with a small liquid part as well "
+                        "conditioned as a whole one. 0 switches it off.",
+                        Patterns::Double(0));
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  SolverParameters::check() const
+  {
+    // A relative reduction below round-off cannot be reached: the solver
+    // would run to 'Maximum iterations' and blame the time step.
+    require(solver_tolerance >= 1e-14 && solver_tolerance < 1,
+            "Solver/Tolerance",
+            "the relative residual reduction must lie in [1e-14, 1); smaller "
+            "ones are below the round-off of the solver in double precision");
+    require(contact_solver_tolerance < 1,
+            "Solver/Contact tolerance",
+            "the relative residual reduction must lie in [0, 1) (0: every "
+            "contact iteration is solved to 'Tolerance')");
+  }
+} // namespace vefs

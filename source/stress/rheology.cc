@@ -1,0 +1,118 @@
+#include <vefs/base/parameter_entries.h>
+#include <vefs/stress/rheology.h>
+
+namespace vefs
+{
+  void
+  MaterialParameters::declare(ParameterHandler &prm)
+  {
+    prm.add_parameter("Gravity",
+                      gravity,
+                      "Gravitational acceleration vector (m/s^2), one "
+                      "component per dimension.",
+                      Patterns::List(Patterns::Double(), 2, 3));
+
+    prm.enter_subsection("Material");
+    {
+      prm.add_parameter("Density",
+                        density,
+                        "Density rho (kg/m^3), positive.",
+                        Patterns::Double());
+      prm.add_parameter("Solvent viscosity",
+                        solvent_viscosity,
+                        "Solvent viscosity eta_s (Pa s), non-negative.",
+                        Patterns::Double());
+      prm.add_parameter("Polymer viscosity",
+                        polymer_viscosity,
+                        "Polymer viscosity eta_p (Pa s), non-negative; "
+                        "positive in the Oldroyd-B and elastic regimes. In "
+                        "the elastic regime the shear modulus is "
+                        "G = eta_p / lambda.",
+                        Patterns::Double());
+      prm.add_parameter("Relaxation time",
+                        relaxation_time,
+                        "Relaxation time lambda (s). Zero selects the "
+                        "Newtonian regime with viscosity eta_s + eta_p; "
+                        "positive: the Oldroyd-B liquid (Alpha = 1) or the "
+                        "elastic solid (Alpha = 0).",
+                        Patterns::Double());
+      prm.add_parameter(
+        "Alpha",
+        alpha,
+        "Factor of sigma in the constitutive law alpha sigma + lambda "
+        "(upper-convected derivative of sigma) = 2 eta_p eps(u): 1 for "
+        "liquids, 0 for the elastic limit, an incompressible neo-Hookean "
+        "solid with sigma = G (B - I), G = eta_p / lambda (needs lambda > 0 "
+        "and eta_p > 0). A positive solvent viscosity with Alpha = 0 adds a "
+        "viscous stress 2 eta_s eps(u): a Kelvin-Voigt solid.",
+        Patterns::Integer(0, 1));
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  MaterialParameters::check(const unsigned int dimension) const
+  {
+    require_point(gravity, dimension, "Gravity");
+    require(density > 0, "Material/Density", "must be positive");
+    require(solvent_viscosity >= 0,
+            "Material/Solvent viscosity",
+            "must be non-negative");
+    require(polymer_viscosity >= 0,
+            "Material/Polymer viscosity",
+            "must be non-negative");
+    require(relaxation_time >= 0,
+            "Material/Relaxation time",
+            "must be non-negative");
+    require(!(alpha == 0 && relaxation_time == 0),
+            "Material/Alpha",
+            "alpha = 0 (elastic solid) needs a positive relaxation time");
+    require(newtonian_viscosity() > 0 || relaxation_time > 0,
+            "Material/Solvent viscosity",
+            "a Newtonian liquid needs eta_s + eta_p > 0");
+    require(regime() == Regime::newtonian || polymer_viscosity > 0,
+            "Material/Polymer viscosity",
+            std::string(regime() == Regime::elastic_solid
+                          ? "alpha = 0 (elastic solid)"
+                          : "a positive relaxation time (Oldroyd-B)") +
+              " needs a positive polymer viscosity (the shear modulus is "
+              "eta_p / lambda)");
+  }
+
+  void
+  StressParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Stress");
+    {
+      add_selection(
+        prm,
+        "Stress update",
+        stress_update,
+        std::vector<std::pair<std::string, StressUpdate>>{
+          {"linear", StressUpdate::linear},
+          {"exponential", StressUpdate::exponential}},
+        "How the conformation tensor c (B for the elastic solid) is carried "
+        "by the new velocity gradient L after the diffusion step: linear, "
+        "c* + tau (L c* + c* L^T), the seed's first-order formula and the "
+        "one the diffusion step sees, which loses positive definiteness "
+        "once tau |L| is of order one (an impact); exponential, exp(tau L) "
+        "c* exp(tau L)^T, the exact solution for a velocity gradient "
+        "constant over the step, positive definite by construction and "
+        "equal to the linear one to first order. The relaxation (alpha > 0) "
+        "follows in both cases.");
+      prm.add_parameter(
+        "Stress theta",
+        stress_theta,
+        "Weight theta in [0.5, 1] of the new velocity u in the stress of "
+        "the diffusion step: the stress law sees theta u + (1 - theta) u* "
+        "(u* the advected velocity) and the momentum equation the stress "
+        "theta sigma^{n+1} + (1 - theta) sigma*. 1: the seed's backward "
+        "Euler, which damps elastic oscillations (first order in tau); 0.5: "
+        "the midpoint rule, which keeps the energy of a linear elastic "
+        "oscillation. No effect on Newtonian liquids. See "
+        "doc/bouncing_ball.md.",
+        Patterns::Double(0.5, 1));
+    }
+    prm.leave_subsection();
+  }
+} // namespace vefs

@@ -1,0 +1,119 @@
+#include <vefs/base/parameter_entries.h>
+#include <vefs/transport/transport_parameters.h>
+
+namespace vefs
+{
+  using namespace dealii;
+
+  void
+  TransportParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Transport");
+    {
+      add_selection(prm,
+                    "Level set interpolation",
+                    level_set_interpolation,
+                    std::vector<std::pair<std::string, LevelSetInterpolation>>{
+                      {"linear", LevelSetInterpolation::linear},
+                      {"cubic", LevelSetInterpolation::cubic},
+                      {"limited cubic", LevelSetInterpolation::limited_cubic},
+                      {"gradient augmented",
+                       LevelSetInterpolation::gradient_augmented}},
+                    "How the level set is interpolated at the feet of "
+                    "the characteristics: linear (Q1, an O(h^2) error "
+                    "per step, so the surface smears as the steps "
+                    "shrink); cubic (tensor-product cubic Hermite with "
+                    "nodal derivatives recovered from the Q1 field); "
+                    "limited cubic (cubic clipped to the range of the "
+                    "cell's nodal values); gradient augmented (cubic "
+                    "Hermite with the gradient of the level set carried "
+                    "along the characteristics as well, Nave, Rosales & "
+                    "Seibold 2010, with a four-stage trace of the feet; "
+                    "9x smaller L1 error on the Rider-Kothe vortex at "
+                    "h = 1/128, CFL 5; the default stays linear because "
+                    "the broken dam tests' outputs change, within their "
+                    "bounds, see doc/transport.md).");
+      add_selection(
+        prm,
+        "Velocity interpolation",
+        velocity_interpolation,
+        std::vector<std::pair<std::string, VelocityInterpolation>>{
+          {"linear", VelocityInterpolation::linear},
+          {"cubic", VelocityInterpolation::cubic},
+          {"limited cubic", VelocityInterpolation::limited_cubic}},
+        "How the velocity is interpolated at the feet of the "
+        "characteristics: linear (Q1), which damps a velocity field that "
+        "varies within a few cells (its error acts as a viscosity of order "
+        "h |u|); cubic (tensor-product cubic Hermite with nodal derivatives "
+        "recovered from the Q1 field); limited cubic (cubic clipped to the "
+        "range of the cell's nodal values: no new extrema). Measured on the "
+        "2D stiff ball in doc/bouncing_ball.md.");
+      add_selection(
+        prm,
+        "Stress interpolation",
+        cubic_stress_interpolation,
+        std::vector<std::pair<std::string, bool>>{{"linear", false},
+                                                  {"limited cubic", true}},
+        "How the stress is interpolated at the feet of the characteristics: "
+        "linear (Q1: a convex combination, so the conformation tensor c = "
+        "I + lambda sigma / eta_p stays positive definite, but an elastic "
+        "body's stress is damped as its velocity is by linear velocity "
+        "interpolation) or limited cubic (each component by limited cubic "
+        "Hermite interpolation, kept only where the smallest eigenvalue of "
+        "c is at least half that of the linear one, else linear; "
+        "unsafeguarded, the 2D stiff ball lost positive definiteness at the "
+        "impact and blew up). Measured on the 2D stiff ball in "
+        "doc/bouncing_ball.md.");
+      prm.add_parameter(
+        "Remap distance",
+        remap_distance,
+        "In finest cells: 0 interpolates the level set at the feet of the "
+        "characteristics at every step and adapts the mesh at every step. A "
+        "positive value does both only once the surface has moved about this "
+        "far since the last time (a remap); in between, the level set of a "
+        "step is the remapped one seen through the characteristics of all "
+        "the steps since (each traced in the velocity of its own step), so "
+        "short steps add no interpolation error and the shape error no "
+        "longer grows as the steps shrink (Rider-Kothe vortex at h = 1/128, "
+        "CFL 1, without volume correction: L1 error 4.6e-3 with 0, 4.0e-4 "
+        "with 10; doc/transport.md). The fine band is widened to this many "
+        "cells. Redistancing (at its interval) is done at remaps only. "
+        "Checkpoints hold the steps since the last remap.",
+        Patterns::Double(0));
+      prm.add_parameter("Redistancing interval",
+                        redistancing_interval,
+                        "Every this many steps, make the level set a signed "
+                        "distance again away from the surface (the surface "
+                        "itself does not move); 0: never. The distance has "
+                        "kinks (between two surfaces) that the cubic "
+                        "interpolations smear: with the gradient augmented "
+                        "level set, which carries its own gradient, 0 is "
+                        "more accurate for transport.",
+                        Patterns::Integer(0));
+      prm.add_parameter("Volume correction",
+                        volume_correction,
+                        "Restore the initial liquid volume after each "
+                        "advection by a uniform normal shift of the free "
+                        "surface.",
+                        Patterns::Bool());
+      prm.add_parameter("Prescribed velocity",
+                        prescribed_velocity,
+                        "If not empty, the velocity is this muParser "
+                        "expression (one per component, separated by ';', "
+                        "in x, y, (z,) t) instead of the solution of the "
+                        "flow equations, which are then not solved: a mode "
+                        "to test the transport of the free surface alone.",
+                        Patterns::Anything());
+      prm.add_parameter("Exact final level set",
+                        exact_final_level_set,
+                        "If not empty, the exact liquid region at the end "
+                        "time, to measure the shape error: 'initial' (the "
+                        "flow brings the liquid back to its initial shape) "
+                        "or a muParser expression in x, y, (z) negative in "
+                        "the liquid. Adds the columns shape_error and "
+                        "interface_thickness to the statistics.",
+                        Patterns::Anything());
+    }
+    prm.leave_subsection();
+  }
+} // namespace vefs

@@ -1,0 +1,208 @@
+// The parameters bound to the modules' structs (core/parameters.h) against
+// what deal.II's ParameterHandler holds, and the reading of moved entries
+// (base/parameter_file.h). Exact answers: each value read must land in its
+// member, each entry must print as it was read.
+//  - The defaults of the members are the defaults ParameterHandler prints,
+//    and the default scene passes check().
+//  - A file setting every entry to a non-default value: the members hold
+//    those values, and printing the handler and reading the print into a
+//    fresh Parameters gives the same print (every entry bound both ways).
+//  - Every moved entry set at its old place lands in its new member, with
+//    one warning naming both places; old and new place together are refused.
+
+#include "unit_test.h"
+
+#include <vefs/base/errors.h>
+#include <vefs/core/parameters.h>
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+using namespace dealii;
+
+namespace
+{
+  std::string
+  printed(const ParameterHandler &prm)
+  {
+    std::ostringstream text;
+    prm.print_parameters(text, ParameterHandler::PRM);
+    return text.str();
+  }
+
+  void
+  write(const std::string &file, const std::string &text)
+  {
+    std::ofstream(file) << text;
+  }
+
+  void
+  report(std::ostream &out, const std::string &label, const bool passed)
+  {
+    out << label << ": " << (passed ? "yes" : "NO") << '\n';
+  }
+} // namespace
+
+int
+main()
+{
+  std::ostream &out = std::cout;
+
+  {
+    vefs::Parameters parameters;
+    ParameterHandler prm;
+    parameters.declare(prm);
+    // What the members hold must be what the handler says.
+    report(out,
+           "defaults: members equal the handler's values",
+           std::stod(prm.get({"Time"}, "End time")) ==
+               parameters.time.end_time &&
+             prm.get({"Mesh refinement"}, "Band placement") == "widened" &&
+             !parameters.mesh.band_predicted() &&
+             (prm.get({"Transport"}, "Volume correction") == "true") ==
+               parameters.transport.volume_correction &&
+             prm.get({"Walls"}, "y+") == "open" &&
+             parameters.cavity.wall_type[3] == vefs::WallType::open &&
+             prm.get("Gravity") == "0, -9.81");
+    bool passed = true;
+    try
+      {
+        parameters.check();
+      }
+    catch (const vefs::InputError &)
+      {
+        passed = false;
+      }
+    report(out, "defaults: the default scene passes check()", passed);
+  }
+
+  {
+    const std::string scene = "subsection Time\n"
+                              "  set End time = 0.5\n"
+                              "  set Strain bound = local\n"
+                              "  set Maximum strain per step = 0.1\n"
+                              "end\n"
+                              "subsection Mesh refinement\n"
+                              "  set Band placement = predicted, one change\n"
+                              "  set Maximum level = 5\n"
+                              "end\n"
+                              "subsection Walls\n"
+                              "  set y- = contact\n"
+                              "end\n"
+                              "subsection Stress\n"
+                              "  set Stress update = exponential\n"
+                              "end\n"
+                              "subsection Flow\n"
+                              "  set Outside stress of cut cells = extension\n"
+                              "end\n"
+                              "subsection Postprocess\n"
+                              "  set Probe point = 0.1, 0.05\n"
+                              "end\n";
+    write("scene.prm", scene);
+    vefs::Parameters parameters;
+    ParameterHandler prm;
+    parameters.declare(prm);
+    const auto warnings =
+      vefs::read_parameter_file(prm,
+                                "scene.prm",
+                                vefs::Parameters::moved_entries);
+    report(out,
+           "a scene: every value in its member",
+           warnings.empty() && parameters.time.end_time == 0.5 &&
+             !parameters.time.strain_bound_shortens_step &&
+             parameters.mesh.band_in_one_change() &&
+             parameters.mesh.max_level == 5 &&
+             parameters.cavity.wall_type[2] == vefs::WallType::contact &&
+             parameters.stress.stress_update ==
+               vefs::StressUpdate::exponential &&
+             parameters.flow.extend_outside_stress &&
+             parameters.postprocess.probe_point ==
+               std::vector<double>({0.1, 0.05}));
+
+    write("printed.prm", printed(prm));
+    vefs::Parameters again;
+    ParameterHandler prm_again;
+    again.declare(prm_again);
+    vefs::read_parameter_file(prm_again,
+                              "printed.prm",
+                              vefs::Parameters::moved_entries);
+    report(out,
+           "a scene: its print read again prints the same",
+           printed(prm_again) == printed(prm) &&
+             again.mesh.band_in_one_change() &&
+             again.postprocess.probe_point ==
+               parameters.postprocess.probe_point);
+  }
+
+  {
+    // Every moved entry at its old place, with a value that is not its
+    // default.
+    write("moved.prm",
+          "subsection Mesh refinement\n"
+          "  set Level set interpolation = gradient augmented\n"
+          "  set Velocity interpolation = cubic\n"
+          "  set Stress interpolation = limited cubic\n"
+          "  set Remap distance = 10\n"
+          "  set Redistancing interval = 0\n"
+          "  set Volume correction = false\n"
+          "  set Flow cells = parents\n"
+          "  set Extension layers = 7\n"
+          "  set Outside velocity of cut cells = extension\n"
+          "  set Outside stress of cut cells = extension\n"
+          "end\n"
+          "subsection Solver\n"
+          "  set Stress update = exponential\n"
+          "  set Stress theta = 0.5\n"
+          "end\n");
+    vefs::Parameters parameters;
+    ParameterHandler prm;
+    parameters.declare(prm);
+    const auto warnings =
+      vefs::read_parameter_file(prm,
+                                "moved.prm",
+                                vefs::Parameters::moved_entries);
+    const auto &t = parameters.transport;
+    const auto &f = parameters.flow;
+    report(out,
+           "moved entries: each in its new member",
+           t.level_set_interpolation ==
+               vefs::LevelSetInterpolation::gradient_augmented &&
+             t.velocity_interpolation == vefs::VelocityInterpolation::cubic &&
+             t.cubic_stress_interpolation && t.remap_distance == 10 &&
+             t.redistancing_interval == 0 && !t.volume_correction &&
+             f.flow_on_parents && f.extension_layers == 7 &&
+             f.extend_outside_velocity && f.extend_outside_stress &&
+             parameters.stress.stress_update ==
+               vefs::StressUpdate::exponential &&
+             parameters.stress.stress_theta == 0.5 &&
+             prm.get({"Transport"}, "Remap distance") == "10");
+    out << "moved entries: " << warnings.size() << " warnings, of "
+        << vefs::Parameters::moved_entries.size() << " moved entries\n";
+    out << "first warning: " << warnings.at(0) << '\n';
+  }
+
+  {
+    write("twice.prm",
+          "subsection Mesh refinement\n"
+          "  set Remap distance = 10\n"
+          "end\n"
+          "subsection Transport\n"
+          "  set Remap distance = 3\n"
+          "end\n");
+    vefs::Parameters parameters;
+    ParameterHandler prm;
+    parameters.declare(prm);
+    try
+      {
+        vefs::read_parameter_file(prm,
+                                  "twice.prm",
+                                  vefs::Parameters::moved_entries);
+        out << "old and new place: NOT refused\n";
+      }
+    catch (const vefs::InputError &error)
+      {
+        out << "old and new place: " << error.what() << '\n';
+      }
+  }
+}
