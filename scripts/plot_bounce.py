@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Plots of a bouncing scene (prm/bouncing_ball_2d_stiff.prm): centroid
 height, contact force and contact length, and the kinetic, potential and
-elastic energies with their sum, against time. 2D or 3D: the height is
+elastic energies with their sum, against time; with 'Postprocess/Energy
+budget' a fourth panel: what each stage of the steps added to the sum, summed
+from the start. 2D or 3D: the height is
 centroid_z and the contact area replaces the length when the statistics
 have those columns (a 3D run).
 
@@ -23,7 +25,9 @@ def main(output_dir, png):
     three_d = "centroid_z" in s
     per = "" if three_d else "/m"   # 2D quantities are per metre of depth
     contact = ("contact area (m^2)" if three_d else "contact length (m)")
-    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
+    budget = "energy_change_transport" in s
+    fig, axes = plt.subplots(1, 4 if budget else 3,
+                             figsize=(17 if budget else 13, 3.8))
     axes[0].plot(t, s["centroid_z" if three_d else "centroid_y"])
     axes[0].set_ylabel("centroid height (m)")
     axes[1].plot(t, s["contact_force"])
@@ -40,6 +44,18 @@ def main(output_dir, png):
     axes[2].plot(t, total, "k", label="sum")
     axes[2].set_ylabel("energy (J%s)" % per)
     axes[2].legend(fontsize=7)
+    if budget:
+        scheme = [0.0] * len(t)
+        for stage in ["transport", "flow", "extension"]:
+            added, running = [], 0.0
+            for i, change in enumerate(s["energy_change_" + stage]):
+                running += change if i > 0 else 0.0
+                added.append(running)
+                scheme[i] += running
+            axes[3].plot(t, added, label=stage)
+        axes[3].plot(t, scheme, "k", label="all stages: the scheme's")
+        axes[3].set_ylabel("energy added since t = 0 (J%s)" % per)
+        axes[3].legend(fontsize=7)
     for a in axes:
         a.set_xlabel("t (s)")
         a.grid(alpha=0.3)

@@ -2,7 +2,8 @@
 bouncing_ball_2d_stiff with 'Flow/Flow cells = parents'. The same
 checks against the same references (Newton's second law for the centroid
 over the contact within 10 %, volume change below 1e-6, a rebound and a
-lift-off, at least 0.8 of the energy left after the bounce): see
+lift-off, at least 0.8 of the energy left after the bounce, the energy
+budget closing every step): see
 bouncing_ball_2d_stiff.py, which this runs."""
 import os
 import runpy

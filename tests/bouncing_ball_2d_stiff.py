@@ -16,10 +16,17 @@ left after the bounce. The material has no dissipation: the exact energy
 (kinetic + potential + elastic) is constant, so whatever is lost is the
 scheme's. Bound: at least 0.8 of it left at lift-off, between the 0.91
 that the scene's scheme keeps on this mesh and the 0.72 of the seed's
-(Stress theta = 1, linear interpolation and stress update), which fails."""
+(Stress theta = 1, linear interpolation and stress update), which fails.
+
+The energy budget ('Postprocess/Energy budget'): the three stage columns
+of each step must add up to the change of the total energy in that step
+(bound 1e-8 of the initial energy: the columns are printed with 10
+digits), and they are summed over the free fall and the first contact,
+printed with 2 significant digits."""
 import sys
 
 from vefs_tools.bounce import bounce_events
+from vefs_tools.energy_budget import STAGES, energy_budget
 
 e = bounce_events(sys.argv[1])
 print("first contact at t = %.3g s" % e["first_contact_time"])
@@ -44,3 +51,14 @@ print("max |volume change| below 1e-6: %s"
       % ("yes" if e["max_volume_change"] < 1e-6 else "NO"))
 print("energy after lift-off / initial energy: %.2g, above 0.8: %s"
       % (e["energy_left"], "yes" if e["energy_left"] > 0.8 else "NO"))
+
+budget = energy_budget(sys.argv[1])
+print("energy budget closes every step (within 1e-8 of the initial "
+      "energy): %s" % ("yes" if budget["closure"] < 1e-8 * budget["initial"]
+                       else "NO (%.2g)" % budget["closure"]))
+for name, t_from, t_to in [("free fall", None, e["first_contact_time"]),
+                           ("first contact", e["first_contact_time"],
+                            e["lift_off_time"])]:
+    part = energy_budget(sys.argv[1], t_from, t_to)
+    print("energy added in the %s: " % name + ", ".join(
+        "%s %.2g J/m" % (stage, part[stage]) for stage in STAGES))

@@ -50,6 +50,25 @@ namespace vefs
                         "the velocity has blown up or the time step is far "
                         "too large.",
                         Patterns::Double(0));
+      prm.add_parameter(
+        "Maximum energy growth",
+        max_energy_growth,
+        "The run stops (exit status 1) after a step that raised the total "
+        "energy (kinetic + potential + elastic) by more than this fraction "
+        "of the energy above the lowest state (the kinetic and elastic "
+        "energies and the potential energy above that of all the liquid in "
+        "the lowest corner of the cavity), for a solid or an Oldroyd-B "
+        "liquid in a scene that nothing supplies with energy (no 'velocity' "
+        "walls, no gravity along periodic walls, not a prescribed "
+        "velocity). The default lies between the largest growth of a "
+        "trusted scene (0.020: the soft ball at the seed's step) and that of "
+        "a ball far too stiff for its step (0.049 at elastic wave number "
+        "1000). "
+        "No equation of vefs creates energy: such a step is the scheme's "
+        "failure, typically a solid so stiff that its elastic wave crosses "
+        "many cells per step (column elastic_wave_number, "
+        "doc/reliability.md). 0 turns the check off.",
+        Patterns::Double(0));
       prm.add_parameter("Minimum time step fraction",
                         min_time_step_fraction,
                         "The run stops (exit status 1) before a step when "
@@ -61,6 +80,52 @@ namespace vefs
                         Patterns::Double(0, 1));
     }
     prm.leave_subsection();
+  }
+
+  EnergyWatch::EnergyWatch(const bool                active,
+                           const MaterialParameters &material,
+                           const CavityParameters   &cavity)
+    : active(active)
+    , density(material.density)
+  {
+    // g . x is largest where the potential energy -rho g . x is lowest.
+    for (unsigned int d = 0; d < material.gravity.size(); ++d)
+      lowest_corner_height +=
+        material.gravity[d] * (material.gravity[d] > 0
+                                 ? cavity.cavity_upper[d]
+                                 : cavity.cavity_lower[d]);
+  }
+
+  template <int dim>
+  std::string
+  EnergyWatch::problem(const HealthCheckParameters &parameters,
+                       const StepStatistics<dim>   &s)
+  {
+    const double total =
+      s.kinetic_energy + s.potential_energy + s.elastic_energy;
+    const double scale = total + density * s.volume * lowest_corner_height;
+    std::string  result;
+    if (active && has_previous && parameters.max_energy_growth > 0 &&
+        total - previous_total > parameters.max_energy_growth * previous_scale)
+      result =
+        "the total energy (kinetic + potential + elastic) grew by " +
+        number(total - previous_total) + " in one step, " +
+        number((total - previous_total) / previous_scale) +
+        " of the energy above the lowest state, more than 'Health "
+        "check/Maximum energy growth' = " +
+        number(parameters.max_energy_growth) +
+        ", although nothing in the scene supplies energy" +
+        (s.elastic_wave_number > 0
+           ? " (an elastic wave crosses " + number(s.elastic_wave_number) +
+               " of the finest cells per step, column elastic_wave_number)"
+           : std::string()) +
+        ": " + smaller_steps +
+        " (with a stress, 'Time/Maximum strain per step'; a finer mesh needs "
+        "smaller steps still), or raise the bound";
+    has_previous   = true;
+    previous_total = total;
+    previous_scale = scale;
+    return result;
   }
 
   template <int dim>
@@ -140,6 +205,12 @@ namespace vefs
     return "";
   }
 
+  template std::string
+  EnergyWatch::problem<2>(const HealthCheckParameters &,
+                          const StepStatistics<2> &);
+  template std::string
+  EnergyWatch::problem<3>(const HealthCheckParameters &,
+                          const StepStatistics<3> &);
   template bool
   fields_are_finite<2>(const TransportedFields<2> &);
   template bool

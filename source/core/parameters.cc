@@ -207,6 +207,11 @@ namespace vefs
             "refinement/Maximum level' - 1 (or equal to it, and at least 1): "
             "the flow's cells then all lie on one level");
 
+    require(!postprocess.energy_budget || !transport.velocity_is_prescribed(),
+            "Postprocess/Energy budget",
+            "a prescribed velocity solves no flow and has no energy budget: "
+            "leave it false");
+
     check_resources(*this);
 
     if (dimension == 2)

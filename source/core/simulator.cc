@@ -10,6 +10,7 @@
 #include <vefs/transport/free_surface.h>
 #include <vefs/transport/initial_liquid.h>
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -24,6 +25,24 @@ namespace vefs
       std::ostringstream text;
       prm.print_parameters(text, ParameterHandler::PRM);
       return text.str();
+    }
+
+    /**
+     * Whether the health check watches the energy (EnergyWatch): a solid or
+     * an Oldroyd-B liquid, whose elastic wave the time step may not resolve,
+     * in a scene that nothing supplies with energy: a flow (not a
+     * prescribed velocity) without 'velocity' walls and without gravity
+     * along a periodic direction (the liquid falls there for ever).
+     */
+    bool
+    energy_is_watched(const Parameters &parameters)
+    {
+      bool source = parameters.transport.velocity_is_prescribed();
+      for (const WallType type : parameters.cavity.wall_type)
+        source = source || type == WallType::velocity;
+      for (const unsigned int d : parameters.cavity.periodic_directions())
+        source = source || parameters.material.gravity[d] != 0;
+      return !source && parameters.material.regime() != Regime::newtonian;
     }
   } // namespace
 
@@ -73,6 +92,9 @@ namespace vefs
     , flow(parameters.flow_step(), triangulation)
     , statistics_file(output.path(), comm, !checkpoint.empty())
     , visualization(parameters.output_directory)
+    , energy_watch(energy_is_watched(parameters),
+                   parameters.material,
+                   parameters.cavity)
     , checkpoints(parameters.checkpoint,
                   parameters.output_directory,
                   comm,
@@ -150,7 +172,7 @@ namespace vefs
         resume();
     }
     LiquidDomain<dim> domain(fields);
-    velocity->start(domain, time.time());
+    velocity->start(fields, domain, time.time());
     // A resumed run has the row of its first step already.
     if (checkpoint.empty())
       report(domain);
@@ -178,6 +200,9 @@ namespace vefs
       }
     if (rheology.has_stress())
       {
+        statistics_file.add_column("elastic_wave_number", [](const auto &s) {
+          return s.elastic_wave_number;
+        });
         statistics_file.add_column("min_conformation_eigenvalue",
                                    [](const auto &s) {
                                      return s.min_conformation_eigenvalue;
@@ -420,15 +445,21 @@ namespace vefs
           statistics.interface_thickness =
             interface_thickness(fields, levels.finest_cell_size);
         }
+      if (rheology.has_stress())
+        statistics.elastic_wave_number =
+          std::sqrt(rheology.shear_modulus() / parameters.material.density) *
+          time.tau() / levels.finest_cell_size;
       statistics.wall_time = wall_time_offset + wall_clock.wall_time();
     }
     {
       TimerOutput::Scope scope(timer, "health check");
-      const std::string  problem =
+      std::string        problem =
         state_problem(parameters.health_check,
                       fields,
                       statistics,
                       statistics_file.non_finite_column(statistics));
+      if (problem.empty())
+        problem = energy_watch.problem(parameters.health_check, statistics);
       if (!problem.empty())
         stop(statistics.step, problem, domain, false);
     }

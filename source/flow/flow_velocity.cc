@@ -52,6 +52,18 @@ namespace vefs
             return s.strain_limited_points;
           });
       }
+    if (parameters.energy_budget)
+      {
+        statistics.add_column("energy_change_transport", [](const auto &s) {
+          return s.energy_change_transport;
+        });
+        statistics.add_column("energy_change_flow", [](const auto &s) {
+          return s.energy_change_flow;
+        });
+        statistics.add_column("energy_change_extension", [](const auto &s) {
+          return s.energy_change_extension;
+        });
+      }
     if (flow.has_contact_walls())
       {
         statistics.add_column("contact_force",
@@ -70,9 +82,23 @@ namespace vefs
 
   template <int dim>
   void
-  FlowVelocity<dim>::start(const LiquidDomain<dim> &domain, const double time)
+  FlowVelocity<dim>::start(const TransportedFields<dim> &fields,
+                           const LiquidDomain<dim>      &domain,
+                           const double                  time)
   {
     flow.setup(domain, time);
+    if (parameters.energy_budget)
+      last_energy = energy(fields, domain);
+  }
+
+  template <int dim>
+  double
+  FlowVelocity<dim>::energy(const TransportedFields<dim> &fields,
+                            const LiquidDomain<dim>      &domain) const
+  {
+    TimerOutput::Scope scope(timer, "energy budget");
+    return mechanical_energy(fields, domain, parameters.material, rheology)
+      .total();
   }
 
   template <int dim>
@@ -100,6 +126,12 @@ namespace vefs
                              StepStatistics<dim>     &statistics)
   {
     statistics.linear_iterations = 0;
+    if (parameters.energy_budget)
+      {
+        const double advected              = energy(fields, domain);
+        statistics.energy_change_transport = advected - last_energy;
+        last_energy                        = advected;
+      }
     {
       TimerOutput::Scope scope(timer, "3 diffusion: setup");
       flow.setup(domain, time.time() + time.tau());
@@ -114,6 +146,12 @@ namespace vefs
     }
     statistics.linear_iterations = solve_with_contact(fields, time.tau());
     update_fields(fields, domain, time.tau(), time.expected_cfl(), statistics);
+    if (parameters.energy_budget)
+      {
+        const double extended              = energy(fields, domain);
+        statistics.energy_change_extension = extended - last_energy;
+        last_energy                        = extended;
+      }
   }
 
   template <int dim>
@@ -193,6 +231,12 @@ namespace vefs
                         parameters.flow.extend_outside_stress);
         statistics.max_velocity_gradient = report.max_velocity_gradient;
         statistics.strain_limited_points = report.strain_limited_points;
+      }
+    if (parameters.energy_budget)
+      {
+        const double updated          = energy(fields, domain);
+        statistics.energy_change_flow = updated - last_energy;
+        last_energy                   = updated;
       }
     const unsigned int layers =
       std::max<unsigned int>(parameters.flow.extension_layers,

@@ -34,7 +34,9 @@ namespace vefs
 
   template <int dim>
   void
-  PrescribedVelocity<dim>::start(const LiquidDomain<dim> &, const double)
+  PrescribedVelocity<dim>::start(const TransportedFields<dim> &,
+                                 const LiquidDomain<dim> &,
+                                 const double)
   {
   }
 

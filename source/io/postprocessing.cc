@@ -67,6 +67,19 @@ namespace vefs
                         "velocity is written to the statistics every step "
                         "(columns probe_u_x, probe_u_y, probe_u_z).",
                         Patterns::List(Patterns::Double(), 0, 3));
+      prm.add_parameter(
+        "Energy budget",
+        energy_budget,
+        "If true (flows only), the statistics hold what each stage of a step "
+        "adds to the total energy (kinetic + potential + elastic, J or J/m "
+        "in 2D): energy_change_transport (advection, mesh adaptation, "
+        "redistancing, volume correction), energy_change_flow (the flow "
+        "step with its contact iterations and the stress update) and "
+        "energy_change_extension (the velocity and stress beyond the "
+        "liquid, which reach into the cut cells). Without viscosity, "
+        "moving walls or open walls, their sum is the energy the scheme "
+        "adds or removes. Costs three integrals over the liquid per step.",
+        Patterns::Bool());
     }
     prm.leave_subsection();
   }

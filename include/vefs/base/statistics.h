@@ -75,6 +75,21 @@ namespace vefs
     /** Only with a stress: see StressMeasure. */
     double       min_conformation_eigenvalue      = 1;
     unsigned int non_positive_conformation_points = 0;
+    /**
+     * Only with 'Postprocess/Energy budget': the change of the total energy
+     * (MechanicalEnergy) in the step's transport (advection, mesh
+     * adaptation, redistancing, volume correction), in the flow step with
+     * its contact iterations and the stress update, and in the extension
+     * beyond the liquid.
+     */
+    double energy_change_transport = 0;
+    double energy_change_flow      = 0;
+    double energy_change_extension = 0;
+    /**
+     * Only with a stress: c tau / h, how many of the finest cells an
+     * elastic shear wave (speed c = sqrt(G / rho)) crosses in the step.
+     */
+    double elastic_wave_number = 0;
     /** Only with a stress: see StressUpdateReport. */
     double       max_velocity_gradient = 0;
     unsigned int strain_limited_points = 0;

@@ -1,9 +1,11 @@
 #ifndef vefs_health_check_h
 #define vefs_health_check_h
 
+#include <vefs/base/cavity.h>
 #include <vefs/base/statistics.h>
 #include <vefs/base/time_control.h>
 #include <vefs/fields/transported_fields.h>
+#include <vefs/stress/rheology.h>
 
 #include <string>
 
@@ -17,6 +19,12 @@ namespace vefs
 
     double max_volume_change = 0.2;
     double max_cfl           = 50;
+    /**
+     * Largest growth of the total energy over a step, as a fraction of the
+     * energy above the lowest state, in a scene nothing supplies with
+     * energy; 0: not checked.
+     */
+    double max_energy_growth = 0.035;
     /** Smallest controlled step, as a fraction of 'Time/Time step'. */
     double min_time_step_fraction = 1e-6;
   };
@@ -58,6 +66,43 @@ namespace vefs
                 const TransportedFields<dim> &fields,
                 const StepStatistics<dim>    &statistics,
                 const std::string            &non_finite_statistic);
+
+  /**
+   * The total energy (kinetic + potential + elastic) of a solid or an
+   * Oldroyd-B liquid in a scene that nothing supplies with energy, from
+   * step to step: no equation of vefs creates
+   * energy, so a step that adds much of it is the scheme's failure (an
+   * elastic wave that crosses many cells per step, doc/reliability.md).
+   * The growth of a step is measured against the energy above the lowest
+   * state: the kinetic and elastic energies and the potential energy above
+   * that of all the liquid in the lowest corner of the cavity.
+   */
+  class EnergyWatch
+  {
+  public:
+    /**
+     * @p active: whether to watch: a material with a stress in a scene
+     * without a source of energy.
+     */
+    EnergyWatch(const bool                active,
+                const MaterialParameters &material,
+                const CavityParameters   &cavity);
+
+    /** After the step measured in @p s: what is wrong, or "". */
+    template <int dim>
+    std::string
+    problem(const HealthCheckParameters &parameters,
+            const StepStatistics<dim>   &s);
+
+  private:
+    const bool   active;
+    const double density;
+    /** The largest g . x over the corners of the cavity. */
+    double lowest_corner_height = 0;
+    bool   has_previous         = false;
+    double previous_total       = 0;
+    double previous_scale       = 0;
+  };
 } // namespace vefs
 
 #endif

@@ -57,7 +57,8 @@ namespace vefs
               flow,
               solver,
               mesh.max_level,
-              time.max_strain_per_step};
+              time.max_strain_per_step,
+              postprocess.energy_budget};
     }
 
     /** Entries that have moved to another subsection; their old places are

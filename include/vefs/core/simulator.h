@@ -139,6 +139,7 @@ namespace vefs
     StepStatistics<dim>            statistics;
     StatisticsFile<dim>            statistics_file;
     Visualization<dim>             visualization;
+    EnergyWatch                    energy_watch;
     CheckpointSchedule             checkpoints;
     std::unique_ptr<Function<dim>> exact_final_level_set;
     unsigned int last_output_step = numbers::invalid_unsigned_int;

@@ -68,6 +68,8 @@ namespace vefs
     unsigned int max_level;
     /** 'Time/Maximum strain per step' (0: none). */
     double max_strain_per_step;
+    /** 'Postprocess/Energy budget': the energy changes of each stage. */
+    bool energy_budget;
   };
 } // namespace vefs
 

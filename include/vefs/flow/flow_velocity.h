@@ -5,6 +5,7 @@
 
 #include <vefs/flow/flow_parameters.h>
 #include <vefs/flow/stokes_step.h>
+#include <vefs/stress/mechanical_energy.h>
 #include <vefs/stress/rheology.h>
 #include <vefs/transport/velocity_source.h>
 
@@ -37,7 +38,9 @@ namespace vefs
     set_initial_velocity(TransportedFields<dim> &fields) const override;
 
     void
-    start(const LiquidDomain<dim> &domain, const double time) override;
+    start(const TransportedFields<dim> &fields,
+          const LiquidDomain<dim>      &domain,
+          const double                  time) override;
 
     TimeStep
     time_step(const TimeControl            &time,
@@ -79,10 +82,17 @@ namespace vefs
                   const double             expected_cfl,
                   StepStatistics<dim>     &statistics);
 
+    /** The energy of @p fields on @p domain (the energy budget's). */
+    double
+    energy(const TransportedFields<dim> &fields,
+           const LiquidDomain<dim>      &domain) const;
+
     const FlowStepParameters parameters;
     const Rheology<dim>     &rheology;
-    StokesStep<dim>         &flow;
-    TimerOutput             &timer;
+    /** With the energy budget: the energy at the end of the last step. */
+    double           last_energy = 0;
+    StokesStep<dim> &flow;
+    TimerOutput     &timer;
     /** Solves per step with contact walls, at the most. */
     static constexpr unsigned int max_contact_iterations = 10;
   };

@@ -34,7 +34,9 @@ namespace vefs
     set_initial_velocity(TransportedFields<dim> &fields) const override;
 
     void
-    start(const LiquidDomain<dim> &domain, const double time) override;
+    start(const TransportedFields<dim> &fields,
+          const LiquidDomain<dim>      &domain,
+          const double                  time) override;
 
     TimeStep
     time_step(const TimeControl            &time,

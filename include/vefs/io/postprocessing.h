@@ -26,6 +26,8 @@ namespace vefs
 
     /** Empty: no probe. */
     std::vector<double> probe_point = {};
+    /** The energy changes of each stage of a step in the statistics. */
+    bool energy_budget = false;
   };
 
   /** What a probe point sees. */

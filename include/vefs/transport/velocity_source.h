@@ -38,9 +38,14 @@ namespace vefs
     virtual void
     set_initial_velocity(TransportedFields<dim> &fields) const = 0;
 
-    /** Ready for the state at @p time on @p domain (before its first row). */
+    /**
+     * Ready for the state @p fields at @p time on @p domain (before its
+     * first row).
+     */
     virtual void
-    start(const LiquidDomain<dim> &domain, const double time) = 0;
+    start(const TransportedFields<dim> &fields,
+          const LiquidDomain<dim>      &domain,
+          const double                  time) = 0;
 
     /** The next step after the step @p last measured, from @p time. */
     virtual TimeStep
