@@ -18,12 +18,7 @@ if(NOT BASH)
   set(BASH bash)
 endif()
 
-set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
-set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
-# Avoid "Read -1, expected ..., errno = 1" noise in containers without CMA.
-if(NOT DEFINED ENV{OMPI_MCA_btl_vader_single_copy_mechanism})
-  set(ENV{OMPI_MCA_btl_vader_single_copy_mechanism} none)
-endif()
+include("${CMAKE_CURRENT_LIST_DIR}/test_common.cmake")
 
 set(_src "${TEST_SOURCE_DIR}/${BASE_NAME}")
 set(_expected "${TEST_SOURCE_DIR}/${TEST_NAME}.output")
@@ -58,11 +53,6 @@ function(_print_tail _file _n _title)
     string(SUBSTRING "${_text}" ${_pos} -1 _tail)
   endif()
   message("---- ${_title} (last ${_n} lines of ${_file}):\n${_tail}")
-endfunction()
-
-function(_fail)
-  string(JOIN "" _msg ${ARGV})
-  message(FATAL_ERROR "*** TEST ${TEST_NAME} FAILED: ${_msg}")
 endfunction()
 
 # Remove Open MPI's own diagnostics from a text: blocks framed by lines of

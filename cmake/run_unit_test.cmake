@@ -13,16 +13,7 @@ foreach(_var TEST_NAME NPROC EXECUTABLE EXPECTED RUN_DIR NUMDIFF)
   endif()
 endforeach()
 
-set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
-set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
-if(NOT DEFINED ENV{OMPI_MCA_btl_vader_single_copy_mechanism})
-  set(ENV{OMPI_MCA_btl_vader_single_copy_mechanism} none)
-endif()
-
-function(_fail)
-  string(JOIN "" _msg ${ARGV})
-  message(FATAL_ERROR "*** TEST ${TEST_NAME} FAILED: ${_msg}")
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/test_common.cmake")
 
 if(NOT EXISTS "${EXPECTED}")
   _fail("expected output ${EXPECTED} does not exist")

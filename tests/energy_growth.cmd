@@ -4,8 +4,9 @@
 # on finest cells of 6.25 mm: its elastic wave crosses about 350 cells per
 # step. No equation creates energy, so the health check must stop the run
 # at the step whose total energy grows by more than 'Health check/Maximum
-# energy growth' (0.035 of the energy above the lowest state), naming the
-# elastic wave number; exit status 1, no non-finite number in the
+# energy growth' (0.01 of the energy above the lowest state), naming the
+# elastic wave number (and warns once that it is beyond the trusted 10);
+# exit status 1, no non-finite number in the
 # statistics. Reference: energy conservation of the exact solution. The
 # numbers in the message are replaced by '#' (machine and rank count).
 set -u

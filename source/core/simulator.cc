@@ -449,6 +449,22 @@ namespace vefs
         statistics.elastic_wave_number =
           std::sqrt(rheology.shear_modulus() / parameters.material.density) *
           time.tau() / levels.finest_cell_size;
+      if (statistics.elastic_wave_number > trusted_elastic_wave_number &&
+          !untrusted_wave_number_said)
+        {
+          if (Utilities::MPI::this_mpi_process(comm) == 0)
+            std::cerr << "vefs: warning: step " << time.step()
+                      << " (t = " << time.time()
+                      << "): an elastic wave crosses "
+                      << statistics.elastic_wave_number
+                      << " of the finest cells in a step, beyond the "
+                      << trusted_elastic_wave_number
+                      << " up to which the scheme keeps the energy of an "
+                         "impact (doc/reliability.md, \"Stiff solids\"); "
+                         "shorter steps ('Time/Time step') keep it"
+                      << std::endl;
+          untrusted_wave_number_said = true;
+        }
       statistics.wall_time = wall_time_offset + wall_clock.wall_time();
     }
     {

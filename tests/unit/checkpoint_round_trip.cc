@@ -25,29 +25,6 @@ using namespace dealii;
 
 namespace
 {
-  template <int dim>
-  class Smooth : public Function<dim>
-  {
-  public:
-    Smooth(const unsigned int n_components, const double shift)
-      : Function<dim>(n_components)
-      , shift(shift)
-    {
-    }
-
-    double
-    value(const Point<dim> &p, const unsigned int component) const override
-    {
-      double result = shift + 0.1 * component;
-      for (unsigned int d = 0; d < dim; ++d)
-        result += std::sin((1.7 + 0.3 * component + d) * p[d] + shift);
-      return result;
-    }
-
-  private:
-    const double shift;
-  };
-
   /** As the simulator makes it (simulator.cc): the coarse mesh only. */
   template <int dim>
   std::unique_ptr<parallel::distributed::Triangulation<dim>>
@@ -119,14 +96,15 @@ namespace
     fields.setup_dofs();
     const unsigned int n_stress =
       vefs::TransportedFields<dim>::n_stress_components;
-    fields.interpolate(Smooth<dim>(1, 0.1),
-                       Smooth<dim>(dim, 0.2),
-                       std::make_unique<Smooth<dim>>(n_stress, 0.3).get());
+    fields.interpolate(
+      unit_test::Smooth<dim>(1, 0.1),
+      unit_test::Smooth<dim>(dim, 0.2),
+      std::make_unique<unit_test::Smooth<dim>>(n_stress, 0.3).get());
     vefs::LevelSetHistory<dim> history(1.5);
     history.remap(fields);
-    fields.set_velocity(Smooth<dim>(dim, 0.4));
+    fields.set_velocity(unit_test::Smooth<dim>(dim, 0.4));
     history.add_step(fields, 0.01);
-    fields.set_velocity(Smooth<dim>(dim, 0.5));
+    fields.set_velocity(unit_test::Smooth<dim>(dim, 0.5));
     history.add_step(fields, 1. / 3);
     history.remap_due(0.1 / 3, 0.2);
 

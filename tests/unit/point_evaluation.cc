@@ -25,29 +25,6 @@ using namespace dealii;
 namespace
 {
   template <int dim>
-  class Smooth : public Function<dim>
-  {
-  public:
-    Smooth(const unsigned int n_components, const double shift)
-      : Function<dim>(n_components)
-      , shift(shift)
-    {
-    }
-
-    double
-    value(const Point<dim> &p, const unsigned int component) const override
-    {
-      double result = shift;
-      for (unsigned int d = 0; d < dim; ++d)
-        result += std::sin((2.1 + 0.5 * component - 0.3 * d) * p[d] + shift);
-      return result;
-    }
-
-  private:
-    const double shift;
-  };
-
-  template <int dim>
   void
   check(std::ostream &out)
   {
@@ -84,7 +61,8 @@ namespace
 
     vefs::TransportedFields<dim> fields(triangulation, false, {});
     fields.setup_dofs();
-    fields.interpolate(Smooth<dim>(1, 0.3), Smooth<dim>(dim, -0.2));
+    fields.interpolate(unit_test::Smooth<dim>(1, 0.3),
+                       unit_test::Smooth<dim>(dim, -0.2));
 
     // The same points on every rank.
     std::vector<Point<dim>> points;

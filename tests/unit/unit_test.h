@@ -6,6 +6,10 @@
 // "below BOUND" when they are, and by value (which the expected output
 // does not hold) when they are not.
 
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+
+#include <cmath>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
@@ -42,6 +46,35 @@ namespace unit_test
     else
       out << std::setprecision(17) << value << " (NOT zero)\n";
   }
+  /**
+   * A smooth field with @p n_components components, different in each
+   * component and direction (sines, not a polynomial that Q1 or Hermite
+   * interpolation would reproduce); @p shift makes another one.
+   */
+  template <int dim>
+  class Smooth : public dealii::Function<dim>
+  {
+  public:
+    Smooth(const unsigned int n_components, const double shift)
+      : dealii::Function<dim>(n_components)
+      , shift(shift)
+    {
+    }
+
+    double
+    value(const dealii::Point<dim> &p,
+          const unsigned int        component) const override
+    {
+      double result = shift + 0.1 * component;
+      for (unsigned int d = 0; d < dim; ++d)
+        result += std::sin((1.7 + 0.3 * component + d) * p[d] + shift);
+      return result;
+    }
+
+  private:
+    const double shift;
+  };
+
   /** @p value with few digits, for labels. */
   inline std::string
   text(const double value)

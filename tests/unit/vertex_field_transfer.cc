@@ -24,30 +24,6 @@ using namespace dealii;
 
 namespace
 {
-  /** Smooth, different in every component. */
-  template <int dim>
-  class Smooth : public Function<dim>
-  {
-  public:
-    Smooth(const unsigned int n_components, const double shift)
-      : Function<dim>(n_components)
-      , shift(shift)
-    {
-    }
-
-    double
-    value(const Point<dim> &p, const unsigned int component) const override
-    {
-      double result = shift + component;
-      for (unsigned int d = 0; d < dim; ++d)
-        result += std::sin((1.3 + 0.4 * component + d) * p[d] + 0.2 * d);
-      return result;
-    }
-
-  private:
-    const double shift;
-  };
-
   template <int dim>
   void
   check(std::ostream &out)
@@ -66,9 +42,10 @@ namespace
     fields.setup_dofs();
     const unsigned int n_stress =
       vefs::TransportedFields<dim>::n_stress_components;
-    fields.interpolate(Smooth<dim>(1, 0.5),
-                       Smooth<dim>(dim, -0.3),
-                       std::make_unique<Smooth<dim>>(n_stress, 2.).get());
+    fields.interpolate(
+      unit_test::Smooth<dim>(1, 0.5),
+      unit_test::Smooth<dim>(dim, -0.3),
+      std::make_unique<unit_test::Smooth<dim>>(n_stress, 2.).get());
     // The gradient slots hold something else than a gradient here: any
     // values do.
     for (const auto &node : fields.nodes())

@@ -144,7 +144,9 @@ namespace vefs
     std::unique_ptr<Function<dim>> exact_final_level_set;
     unsigned int last_output_step = numbers::invalid_unsigned_int;
     /** Whether the probe point was said to lie outside the liquid. */
-    bool  probe_outside_said = false;
+    bool probe_outside_said = false;
+    /** Whether the elastic wave number was said to lie beyond the trusted. */
+    bool  untrusted_wave_number_said = false;
     Timer wall_clock;
     /** The wall time of the run before it was resumed. */
     double wall_time_offset = 0;
