@@ -1,16 +1,9 @@
-#include <deal.II/base/utilities.h>
-
 #include <vefs/base/expression_check.h>
 #include <vefs/base/parameter_entries.h>
 #include <vefs/core/parameters.h>
 #include <vefs/core/resource_limits.h>
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <iostream>
-#include <map>
-#include <sstream>
 
 namespace vefs
 {
