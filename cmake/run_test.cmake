@@ -112,14 +112,7 @@ if(IS_DIRECTORY "${_src}.inputs")
   endif()
 endif()
 
-if(NPROC GREATER 1)
-  if(NOT MPIEXEC)
-    _fail("test needs ${NPROC} MPI ranks but mpirun was not found")
-  endif()
-  set(_launcher "${MPIEXEC}" -np ${NPROC} --oversubscribe)
-else()
-  set(_launcher)
-endif()
+_mpi_launcher(_launcher)
 
 # Numdiff options: first line of tests/NAME.numdiff, else defaults.
 set(_numdiff_opts -q -a 1e-10 -r 1e-6)

@@ -27,14 +27,7 @@ file(MAKE_DIRECTORY "${RUN_DIR}")
 set(_output "${RUN_DIR}/test-output")
 set(_stderr "${RUN_DIR}/stderr")
 
-if(NPROC GREATER 1)
-  if(NOT MPIEXEC)
-    _fail("test needs ${NPROC} MPI ranks but mpirun was not found")
-  endif()
-  set(_launcher "${MPIEXEC}" -np ${NPROC} --oversubscribe)
-else()
-  set(_launcher)
-endif()
+_mpi_launcher(_launcher)
 
 execute_process(
   COMMAND ${_launcher} "${EXECUTABLE}"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Usage: scripts/reliability_table.sh [WORKDIR]
 # Runs vefs on a list of bad inputs (quick manual runs) and prints the
-# markdown rows of doc/reliability.md: input, exit status, message (first
+# markdown rows of doc/bad_inputs.md: input, exit status, message (first
 # line of stderr, the run directory stripped). Works from any cwd.
 set -u
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
