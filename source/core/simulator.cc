@@ -290,16 +290,17 @@ namespace vefs
       {
         fields.interpolate(*level_set, *initial_velocity, stress.get());
         if (cycle == parameters.mesh.max_level ||
-            !adapt_mesh(triangulation,
-                        fields,
-                        levels,
-                        1,
-                        LevelSetInterpolation::linear))
+            !adapt_mesh<dim>(triangulation,
+                             fields,
+                             nullptr,
+                             levels,
+                             1,
+                             LevelSetInterpolation::linear))
           break;
       }
     velocity->set_initial_velocity(fields);
     const double initial_volume = sharp_liquid_volume(fields, 0).volume;
-    surface->set_initial_volume(initial_volume);
+    surface->start(fields, *level_set, initial_volume);
     if (!std::isfinite(initial_volume) || !fields_are_finite(fields))
       throw InputError("entry 'Initial liquid/Shape': the initial level set, "
                        "velocity or stress is not finite somewhere in the "
@@ -314,8 +315,11 @@ namespace vefs
   void
   Simulator<dim>::resume()
   {
-    const RunState<dim> state =
-      read_checkpoint(checkpoint, triangulation, fields, surface->history());
+    const RunState<dim> state = read_checkpoint(checkpoint,
+                                                triangulation,
+                                                fields,
+                                                surface->gradient(),
+                                                surface->history());
     surface->resume(state.initial_volume, state.expected_volume);
     last_output_step = state.last_output_step;
     wall_time_offset = state.statistics.wall_time;
@@ -382,6 +386,7 @@ namespace vefs
       return write_checkpoint(parameters.output_directory,
                               parameters_text,
                               fields,
+                              surface->gradient(),
                               surface->history(),
                               state);
     });

@@ -3,118 +3,74 @@
 #include <vefs/compat/box_mesh_locator.h>
 #include <vefs/fields/coarsened_detail.h>
 
-#include <cstring>
 
 namespace vefs
 {
-  namespace
-  {
-    template <int dim>
-    typename DoFHandler<dim>::active_cell_iterator
-    dof_cell(const DoFHandler<dim>                            &dof_handler,
-             const typename Triangulation<dim>::cell_iterator &cell)
-    {
-      return typename DoFHandler<dim>::active_cell_iterator(
-        &dof_handler.get_triangulation(),
-        cell->level(),
-        cell->index(),
-        &dof_handler);
-    }
-  } // namespace
-
   template <int dim>
   void
-  CoarsenedDetail<dim>::attach(parallel::distributed::Triangulation<dim> &mesh,
-                               const DoFHandler<dim> &dof_handler,
-                               const VectorType      &fields,
-                               const unsigned int     components)
+  CoarsenedDetail<dim>::from_fields(const TransportedFields<dim> &fields)
   {
-    AssertThrow(handle == none, ExcInternalError());
-    AssertThrow(n_components == 0 || n_components == components,
+    AssertThrow(n_components == 0 || n_components == fields.n_components,
                 ExcInternalError());
-    n_components                = components;
+    this->fields = &fields;
+    n_components = fields.n_components;
+  }
+
+  template <int dim>
+  std::vector<std::pair<unsigned int, unsigned int>>
+  CoarsenedDetail<dim>::components() const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> result;
+    for (unsigned int c = 0; c < n_components; ++c)
+      result.emplace_back(0, c);
+    return result;
+  }
+
+  template <int dim>
+  std::vector<double>
+  CoarsenedDetail<dim>::pack(
+    const typename Triangulation<dim>::cell_iterator &cell,
+    const CellStatus                                  status) const
+  {
+    AssertThrow(fields, ExcInternalError());
     const unsigned int n_values = n_points * n_components;
-    handle                      = mesh.register_data_attach(
-      [this, &dof_handler, &fields, n_values](
-        const typename Triangulation<dim>::cell_iterator &cell,
-        const typename Triangulation<dim>::CellStatus     status) {
-        std::vector<char> buffer;
-        if (status == Triangulation<dim>::CELL_COARSEN)
+    if (status == Triangulation<dim>::CELL_COARSEN)
+      {
+        std::vector<double> family(n_values);
+        for (unsigned int child = 0; child < cell->n_children(); ++child)
           {
-            std::vector<double> family(n_values);
-            for (unsigned int child = 0; child < cell->n_children(); ++child)
+            const auto fine = fields->cell_of(cell->child(child));
+            for (const unsigned int v : fine->vertex_indices())
               {
-                const auto fine = dof_cell(dof_handler, cell->child(child));
-                for (const unsigned int v : fine->vertex_indices())
-                  {
-                    double *point =
-                      &family[lattice_point(child, v) * n_components];
-                    for (unsigned int c = 0; c < n_components; ++c)
-                      point[c] = fields(fine->vertex_dof_index(v, c));
-                  }
+                double *point =
+                  &family[FamilyLattice<dim>::point(child, v) * n_components];
+                for (unsigned int c = 0; c < n_components; ++c)
+                  point[c] = fields->value_at(fine, v, c);
               }
-            buffer.resize(n_values * sizeof(double));
-            std::memcpy(buffer.data(), family.data(), buffer.size());
           }
-        else if (const double *kept = lattice(
-                   typename Triangulation<dim>::active_cell_iterator(cell)))
-          {
-            buffer.resize(n_values * sizeof(double));
-            std::memcpy(buffer.data(), kept, buffer.size());
-          }
-        return buffer;
-      },
-      /*returns_variable_size_data=*/true);
+        return family;
+      }
+    if (const double *kept =
+          lattice(typename Triangulation<dim>::active_cell_iterator(cell)))
+      return std::vector<double>(kept, kept + n_values);
+    return {};
   }
 
   template <int dim>
   void
-  CoarsenedDetail<dim>::unpack(parallel::distributed::Triangulation<dim> &mesh,
-                               const DoFHandler<dim> &dof_handler,
-                               VectorType            &fields)
+  CoarsenedDetail<dim>::start_keeping(const Triangulation<dim> &mesh)
   {
-    AssertThrow(handle != none, ExcInternalError());
     offsets.assign(mesh.n_active_cells(), none);
     values.clear();
-    const unsigned int  n_values = n_points * n_components;
-    std::vector<double> packed(n_values);
-    mesh.notify_ready_to_unpack(
-      handle,
-      [&](
-        const typename Triangulation<dim>::cell_iterator               &cell,
-        const typename Triangulation<dim>::CellStatus                   status,
-        const boost::iterator_range<std::vector<char>::const_iterator> &data) {
-        if (data.empty())
-          return;
-        AssertThrow(static_cast<std::size_t>(data.size()) ==
-                      n_values * sizeof(double),
-                    ExcInternalError());
-        std::memcpy(packed.data(), &*data.begin(), data.size());
-        if (status != Triangulation<dim>::CELL_REFINE)
-          {
-            store(typename Triangulation<dim>::active_cell_iterator(cell),
-                  packed.data());
-            return;
-          }
-        // Refined again (the 2:1 balance): the children's vertices are the
-        // lattice, so they take the values they had.
-        for (unsigned int child = 0; child < cell->n_children(); ++child)
-          {
-            const auto fine = dof_cell(dof_handler, cell->child(child));
-            for (const unsigned int v : fine->vertex_indices())
-              {
-                const double *point =
-                  &packed[lattice_point(child, v) * n_components];
-                for (unsigned int c = 0; c < n_components; ++c)
-                  {
-                    const auto dof = fine->vertex_dof_index(v, c);
-                    if (fields.in_local_range(dof))
-                      fields(dof) = point[c];
-                  }
-              }
-          }
-      });
-    handle = none;
+  }
+
+  template <int dim>
+  void
+  CoarsenedDetail<dim>::keep(
+    const typename Triangulation<dim>::active_cell_iterator &cell,
+    const double                                            *lattice)
+  {
+    store(cell, lattice);
   }
 
   template <int dim>
@@ -134,7 +90,8 @@ namespace vefs
     for (const unsigned int v : GeometryInfo<dim>::vertex_indices())
       {
         const double  weight = BoxMeshLocator<dim>::vertex_weight(xi_child, v);
-        const double *point  = lattice + lattice_point(child, v) * n_components;
+        const double *point =
+          lattice + FamilyLattice<dim>::point(child, v) * n_components;
         for (unsigned int c = 0; c < n_components; ++c)
           values[c] += weight * point[c];
       }
@@ -177,7 +134,6 @@ namespace vefs
   void
   CoarsenedDetail<dim>::clear()
   {
-    AssertThrow(handle == none, ExcInternalError());
     offsets.clear();
     values.clear();
   }

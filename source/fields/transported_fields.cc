@@ -45,7 +45,6 @@ namespace vefs
     constraints.close();
 
     initialize_vector(fields);
-    initialize_vector(gradient_of_level_set);
     localize_constraints();
 
     // FE_Q(1)^n_components: the i-th degree of freedom of a vertex belongs to
@@ -90,16 +89,6 @@ namespace vefs
         for (unsigned int d = 0; d < dim; ++d)
           fields(node.dofs[d]) = velocity.value(node.point, d);
         fields(node.dofs[level_set_component]) = level_set.value(node.point);
-        // Central differences: the expression has no analytic gradient.
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const double step = 1e-6;
-            Point<dim>   plus = node.point, minus = node.point;
-            plus[d] += step;
-            minus[d] -= step;
-            gradient_of_level_set(node.dofs[d]) =
-              (level_set.value(plus) - level_set.value(minus)) / (2 * step);
-          }
         if (has_stress())
           for (unsigned int i = 0; i < n_stress_components; ++i)
             fields(node.dofs[first_stress_component + i]) =
@@ -121,14 +110,6 @@ namespace vefs
   template <int dim>
   void
   TransportedFields<dim>::finalize()
-  {
-    make_consistent(fields);
-    make_consistent(gradient_of_level_set);
-  }
-
-  template <int dim>
-  void
-  TransportedFields<dim>::finalize_fields_only()
   {
     make_consistent(fields);
   }
@@ -160,15 +141,6 @@ namespace vefs
     // same local range.
     copy.reinit(partitioner);
     copy.copy_locally_owned_data_from(fields);
-    copy.update_ghost_values();
-  }
-
-  template <int dim>
-  void
-  TransportedFields<dim>::copy_level_set_gradient_to(VectorType &copy) const
-  {
-    copy.reinit(partitioner);
-    copy.copy_locally_owned_data_from(gradient_of_level_set);
     copy.update_ghost_values();
   }
 

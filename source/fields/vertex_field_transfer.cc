@@ -9,10 +9,12 @@ namespace vefs
   VertexFieldTransfer<dim>::VertexFieldTransfer(
     parallel::distributed::Triangulation<dim> &mesh,
     const TransportedFields<dim>              &fields,
-    const std::vector<Slot>                   &slots)
+    const std::vector<Slot>                   &slots,
+    LatticeSource                             *lattice_source)
     : mesh(mesh)
     , slots(slots)
     , child_weights(make_child_vertex_weights<dim>())
+    , lattice_source(lattice_source)
   {
     for (const Slot &slot : slots)
       n_values += slot.components.size();
@@ -26,6 +28,26 @@ namespace vefs
                              status == Triangulation<dim>::CELL_COARSEN);
       },
       false);
+    if (!lattice_source)
+      return;
+    lattice_components = lattice_source->components();
+    for (const auto &[slot, component] : lattice_components)
+      AssertThrow(slot < slots.size(), ExcInternalError());
+    lattice_handle = mesh.register_data_attach(
+      [this](const typename Triangulation<dim>::cell_iterator &cell,
+             const CellStatus                                  status) {
+        const std::vector<double> lattice =
+          this->lattice_source->pack(cell, status);
+        AssertThrow(lattice.empty() ||
+                      lattice.size() == FamilyLattice<dim>::n_points *
+                                          lattice_components.size(),
+                    ExcInternalError());
+        std::vector<char> buffer(lattice.size() * sizeof(double));
+        if (!lattice.empty())
+          std::memcpy(buffer.data(), lattice.data(), buffer.size());
+        return buffer;
+      },
+      /*returns_variable_size_data=*/true);
   }
 
   template <int dim>
@@ -81,6 +103,34 @@ namespace vefs
 
   template <int dim>
   void
+  VertexFieldTransfer<dim>::write_lattice(
+    const TransportedFields<dim>                     &fields,
+    const typename Triangulation<dim>::cell_iterator &parent,
+    const double                                     *lattice,
+    const std::vector<VectorType *>                  &vectors) const
+  {
+    const unsigned int n_values = lattice_components.size();
+    for (unsigned int child = 0; child < parent->n_children(); ++child)
+      {
+        const auto cell = fields.cell_of(parent->child(child));
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const double *point =
+              lattice + n_values * FamilyLattice<dim>::point(child, v);
+            for (unsigned int k = 0; k < n_values; ++k)
+              {
+                const auto [slot, component] = lattice_components[k];
+                const types::global_dof_index dof =
+                  cell->vertex_dof_index(v, component);
+                if (vectors[slot]->in_local_range(dof))
+                  (*vectors[slot])(dof) = point[k];
+              }
+          }
+      }
+  }
+
+  template <int dim>
+  void
   VertexFieldTransfer<dim>::unpack(const TransportedFields<dim>    &fields,
                                    const std::vector<VectorType *> &vectors)
   {
@@ -112,6 +162,28 @@ namespace vefs
                   child[v * n_values + k] += weight * parent[w * n_values + k];
             write(fields, cell->child(c), child.data(), vectors);
           }
+      });
+    if (!lattice_source)
+      return;
+
+    lattice_source->start_keeping(mesh);
+    std::vector<double> lattice;
+    mesh.notify_ready_to_unpack(
+      lattice_handle,
+      [&](
+        const typename Triangulation<dim>::cell_iterator               &cell,
+        const CellStatus                                                status,
+        const boost::iterator_range<std::vector<char>::const_iterator> &data) {
+        if (data.empty())
+          return;
+        lattice.resize(data.size() / sizeof(double));
+        std::memcpy(lattice.data(), &*data.begin(), data.size());
+        if (status == Triangulation<dim>::CELL_REFINE)
+          write_lattice(fields, cell, lattice.data(), vectors);
+        else
+          lattice_source->keep(
+            typename Triangulation<dim>::active_cell_iterator(cell),
+            lattice.data());
       });
   }
 

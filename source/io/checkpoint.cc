@@ -288,6 +288,7 @@ namespace vefs
   write_checkpoint(const std::string            &output_directory,
                    const std::string            &parameters_text,
                    const TransportedFields<dim> &fields,
+                   const LevelSetGradient<dim>  &level_set_gradient,
                    const LevelSetHistory<dim>   &history,
                    const RunState<dim>          &state)
   {
@@ -321,7 +322,7 @@ namespace vefs
       // And the steps since the last remap of the level set.
       std::vector<const typename TransportedFields<dim>::VectorType *> vectors{
         &fields.vector(),
-        &fields.level_set_gradient_vector()};
+        &level_set_gradient.vector()};
       for (const auto *vector : history.vectors())
         vectors.push_back(vector);
       transfer.prepare_for_serialization(vectors);
@@ -407,6 +408,7 @@ namespace vefs
   read_checkpoint(const std::string                         &directory,
                   parallel::distributed::Triangulation<dim> &triangulation,
                   TransportedFields<dim>                    &fields,
+                  LevelSetGradient<dim>                     &level_set_gradient,
                   LevelSetHistory<dim>                      &history)
   {
     const MPI_Comm comm = triangulation.get_communicator();
@@ -494,9 +496,11 @@ namespace vefs
       SolutionTransfer<dim, typename TransportedFields<dim>::VectorType>
         transfer(fields.dof_handler);
     transfer.deserialize(targets);
-    fields.mutable_vector()                    = loaded[0];
-    fields.mutable_level_set_gradient_vector() = loaded[1];
+    fields.mutable_vector() = loaded[0];
     fields.finalize();
+    level_set_gradient.reinit(fields);
+    level_set_gradient.mutable_vector() = loaded[1];
+    level_set_gradient.finalize(fields);
     history.restored();
     // Resumed from checkpoint.old/ because checkpoint/ is damaged: set the
     // damaged one aside, so that the next checkpoint keeps the good one as
@@ -520,22 +524,26 @@ namespace vefs
   write_checkpoint<2>(const std::string &,
                       const std::string &,
                       const TransportedFields<2> &,
+                      const LevelSetGradient<2> &,
                       const LevelSetHistory<2> &,
                       const RunState<2> &);
   template std::string
   write_checkpoint<3>(const std::string &,
                       const std::string &,
                       const TransportedFields<3> &,
+                      const LevelSetGradient<3> &,
                       const LevelSetHistory<3> &,
                       const RunState<3> &);
   template RunState<2>
   read_checkpoint<2>(const std::string &,
                      parallel::distributed::Triangulation<2> &,
                      TransportedFields<2> &,
+                     LevelSetGradient<2> &,
                      LevelSetHistory<2> &);
   template RunState<3>
   read_checkpoint<3>(const std::string &,
                      parallel::distributed::Triangulation<3> &,
                      TransportedFields<3> &,
+                     LevelSetGradient<3> &,
                      LevelSetHistory<3> &);
 } // namespace vefs

@@ -329,6 +329,7 @@ namespace vefs
     template <int dim>
     Interpolation<dim>
     level_set_interpolation(const TransportedFields<dim> &fields,
+                            const LevelSetGradient<dim>  &level_set_gradient,
                             const LevelSetInterpolation   interpolation,
                             FieldHermite<dim>            &hermite)
     {
@@ -337,7 +338,8 @@ namespace vefs
         return how;
       const bool gradient_augmented =
         interpolation == LevelSetInterpolation::gradient_augmented;
-      hermite.recover(fields, gradient_augmented);
+      hermite.recover(fields,
+                      gradient_augmented ? &level_set_gradient : nullptr);
       how.hermite = &hermite;
       how.limited = interpolation == LevelSetInterpolation::limited_cubic;
       how.level_set_gradient = gradient_augmented;
@@ -378,6 +380,7 @@ namespace vefs
   template <int dim>
   void
   advect_along_characteristics(TransportedFields<dim>     &fields,
+                               LevelSetGradient<dim>      &level_set_gradient,
                                const double                tau,
                                const BoxMeshLocator<dim>  &locator,
                                const FootInterpolation    &interpolation,
@@ -428,9 +431,11 @@ namespace vefs
       }
 
     FieldHermite<dim> hermite;
-    auto              how =
-      level_set_interpolation(fields, interpolation.level_set, hermite);
-    how.coarsened_detail = coarsened_detail;
+    auto              how = level_set_interpolation(fields,
+                                       level_set_gradient,
+                                       interpolation.level_set,
+                                       hermite);
+    how.coarsened_detail  = coarsened_detail;
     std::vector<unsigned int> cubic_components;
     if (interpolation.velocity != VelocityInterpolation::linear)
       {
@@ -473,9 +478,11 @@ namespace vefs
           Tensor<1, dim>        old_gradient;
           for (unsigned int d = 0; d < dim; ++d)
             old_gradient[d] = at_feet[i][first_extra<dim> + d];
-          fields.set_level_set_gradient(nodes[i], old_gradient * J);
+          level_set_gradient.set(nodes[i], old_gradient * J);
         }
     fields.finalize();
+    if (gradient_augmented)
+      level_set_gradient.finalize(fields);
   }
 
   template <int dim>
@@ -561,18 +568,21 @@ namespace vefs
   template <int dim>
   std::vector<std::pair<double, Tensor<1, dim>>>
   level_set_at(const TransportedFields<dim>  &fields,
+               const LevelSetGradient<dim>   &level_set_gradient,
                const std::vector<Point<dim>> &points,
                const BoxMeshLocator<dim>     &locator,
                const LevelSetInterpolation    interpolation)
   {
     const bool gradient_augmented =
       interpolation == LevelSetInterpolation::gradient_augmented;
-    FieldHermite<dim> hermite;
-    const auto        values =
-      evaluate_at(points,
-                  fields,
-                  locator,
-                  level_set_interpolation(fields, interpolation, hermite));
+    FieldHermite<dim>                              hermite;
+    const auto                                     values = evaluate_at(points,
+                                    fields,
+                                    locator,
+                                    level_set_interpolation(fields,
+                                                            level_set_gradient,
+                                                            interpolation,
+                                                            hermite));
     std::vector<std::pair<double, Tensor<1, dim>>> result(points.size());
     for (unsigned int i = 0; i < points.size(); ++i)
       {
@@ -596,6 +606,7 @@ namespace vefs
     std::vector<double> &);                                                    \
   template std::vector<std::pair<double, Tensor<1, dim>>> level_set_at<dim>(   \
     const TransportedFields<dim> &,                                            \
+    const LevelSetGradient<dim> &,                                             \
     const std::vector<Point<dim>> &,                                           \
     const BoxMeshLocator<dim> &,                                               \
     const LevelSetInterpolation);                                              \
@@ -609,12 +620,14 @@ namespace vefs
 
   template void
   advect_along_characteristics<2>(TransportedFields<2> &,
+                                  LevelSetGradient<2> &,
                                   const double,
                                   const BoxMeshLocator<2> &,
                                   const FootInterpolation &,
                                   const CoarsenedDetail<2> *);
   template void
   advect_along_characteristics<3>(TransportedFields<3> &,
+                                  LevelSetGradient<3> &,
                                   const double,
                                   const BoxMeshLocator<3> &,
                                   const FootInterpolation &,

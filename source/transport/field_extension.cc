@@ -161,7 +161,7 @@ namespace vefs
                                  sum(node.dofs[c]) / count(node.dofs[0]));
               known(node.dofs[0]) = 1;
             }
-        fields.finalize_fields_only();
+        fields.finalize();
         known.update_ghost_values();
 
         // The next front: the cells of this one and those around the

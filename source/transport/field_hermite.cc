@@ -67,7 +67,7 @@ namespace vefs
   template <int dim>
   void
   FieldHermite<dim>::recover(const TransportedFields<dim> &fields,
-                             const bool                    advected_gradient)
+                             const LevelSetGradient<dim>  *advected_gradient)
   {
     constexpr unsigned int c = TransportedFields<dim>::level_set_component;
     constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
@@ -91,7 +91,7 @@ namespace vefs
               if (advected_gradient)
                 {
                   const Tensor<1, dim> gradient =
-                    fields.level_set_gradient_at(cell, v);
+                    advected_gradient->at(cell, v);
                   for (unsigned int d = 0; d < dim; ++d)
                     values[1 + d][v] = gradient[d];
                 }

@@ -10,45 +10,31 @@ namespace vefs
   namespace
   {
     /**
-     * Lends @p vector to the fields (as their vector, or as their level set
-     * gradient if @p gradient) for as long as it lives, so that the fields'
-     * own interpolation reads it: the kept vectors have the fields' layout,
-     * on the same mesh.
+     * Lends @p vector to @p holder (the fields, or the level set gradient)
+     * for as long as it lives, so that the holder's own interpolation reads
+     * it: the kept vectors have the fields' layout, on the same mesh.
      */
-    template <int dim>
+    template <typename Holder>
     class Lent
     {
     public:
-      using VectorType = typename TransportedFields<dim>::VectorType;
+      using VectorType = typename Holder::VectorType;
 
-      Lent(TransportedFields<dim> &fields,
-           VectorType             &vector,
-           const bool              gradient = false)
-        : fields(fields)
+      Lent(Holder &holder, VectorType &vector)
+        : holder(holder)
         , vector(vector)
-        , gradient(gradient)
       {
-        swap();
+        holder.swap(vector);
       }
 
       ~Lent()
       {
-        swap();
+        holder.swap(vector);
       }
 
     private:
-      void
-      swap()
-      {
-        if (gradient)
-          fields.swap_level_set_gradient(vector);
-        else
-          fields.swap(vector);
-      }
-
-      TransportedFields<dim> &fields;
-      VectorType             &vector;
-      const bool              gradient;
+      Holder     &holder;
+      VectorType &vector;
     };
   } // namespace
 
@@ -75,6 +61,7 @@ namespace vefs
   template <int dim>
   void
   LevelSetHistory<dim>::compose(TransportedFields<dim>     &fields,
+                                LevelSetGradient<dim>      &level_set_gradient,
                                 const BoxMeshLocator<dim>  &locator,
                                 const LevelSetInterpolation interpolation)
   {
@@ -92,7 +79,7 @@ namespace vefs
       points[i] = nodes[i].point;
     for (auto step = steps.rbegin(); step != steps.rend(); ++step)
       {
-        const Lent<dim> velocity(fields, step->velocity);
+        const Lent<TransportedFields<dim>> velocity(fields, step->velocity);
         trace_back<dim>(fields,
                         step->velocity_gradient,
                         step->tau,
@@ -104,9 +91,14 @@ namespace vefs
 
     std::vector<std::pair<double, Tensor<1, dim>>> at_feet;
     {
-      const Lent<dim> level_set(fields, base_level_set);
-      const Lent<dim> gradient(fields, base_gradient, true);
-      at_feet = level_set_at<dim>(fields, points, locator, interpolation);
+      const Lent<TransportedFields<dim>> level_set(fields, base_level_set);
+      const Lent<LevelSetGradient<dim>>  gradient(level_set_gradient,
+                                                 base_gradient);
+      at_feet = level_set_at<dim>(fields,
+                                  level_set_gradient,
+                                  points,
+                                  locator,
+                                  interpolation);
     }
 
     for (unsigned int i = 0; i < nodes.size(); ++i)
@@ -118,10 +110,11 @@ namespace vefs
                                : at_feet[i].first);
         // grad psi^n(x) = J^T grad psi^m(X(x)).
         if (gradient_augmented)
-          fields.set_level_set_gradient(nodes[i],
-                                        at_feet[i].second * jacobians[i]);
+          level_set_gradient.set(nodes[i], at_feet[i].second * jacobians[i]);
       }
     fields.finalize();
+    if (gradient_augmented)
+      level_set_gradient.finalize(fields);
   }
 
   template <int dim>
@@ -142,12 +135,13 @@ namespace vefs
 
   template <int dim>
   void
-  LevelSetHistory<dim>::remap(const TransportedFields<dim> &fields)
+  LevelSetHistory<dim>::remap(const TransportedFields<dim> &fields,
+                              const LevelSetGradient<dim>  &level_set_gradient)
   {
     if (!enabled())
       return;
     fields.copy_to(base_level_set);
-    fields.copy_level_set_gradient_to(base_gradient);
+    level_set_gradient.copy_to(base_gradient, fields);
     steps.clear();
     moved    = 0;
     has_base = true;
@@ -160,7 +154,7 @@ namespace vefs
   {
     if (!has_base)
       return;
-    const Lent<dim> level_set(fields, base_level_set);
+    const Lent<TransportedFields<dim>> level_set(fields, base_level_set);
     for (const auto &node : fields.nodes())
       fields.set_level_set(node, fields.level_set(node) + shift);
     fields.finalize();

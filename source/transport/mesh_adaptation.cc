@@ -251,106 +251,65 @@ namespace vefs
      * the liquid shrinks by O(h^2) at each refinement (vortex, h = 1/128,
      * CFL 1, no volume correction: 8.9 % of the liquid lost with the Q1
      * values, 5.2 % with the cubic ones, 1.7 % gained on a uniform mesh).
-     * Before the mesh changes, each cell to be refined packs the value and
-     * gradient of its Hermite interpolant at the vertices of its children
-     * (a lattice of 3^dim points); they are written after the transfer.
+     * Each cell to be refined packs the value and gradient of its Hermite
+     * interpolant at the vertices of its children, which take them.
+     * The fields are slot 0 of the transfer, the level set gradient slot 1.
      */
     template <int dim>
-    class HermiteRefinement
+    class HermiteRefinement : public VertexFieldTransfer<dim>::LatticeSource
     {
     public:
-      HermiteRefinement(parallel::distributed::Triangulation<dim> &mesh,
-                        const TransportedFields<dim>              &fields,
-                        const LevelSetInterpolation interpolation)
-        : mesh(mesh)
+      HermiteRefinement(const TransportedFields<dim> &fields,
+                        const LevelSetGradient<dim>  &level_set_gradient,
+                        const LevelSetInterpolation   interpolation)
+        : fields(fields)
         , limited(interpolation == LevelSetInterpolation::limited_cubic)
       {
         hermite.recover(fields,
                         interpolation ==
-                          LevelSetInterpolation::gradient_augmented);
-        handle = mesh.register_data_attach(
-          [this, &fields](const auto &cell, const auto status) {
-            return status == Triangulation<dim>::CELL_REFINE
-                     ? Utilities::pack(children_vertex_values(fields, cell),
-                                       false)
-                     : std::vector<char>();
-          },
-          true);
+                            LevelSetInterpolation::gradient_augmented
+                          ? &level_set_gradient
+                          : nullptr);
       }
 
-      /** Write the packed values into the fields of the new mesh. */
-      void
-      unpack(TransportedFields<dim> &fields)
+      std::vector<std::pair<unsigned int, unsigned int>>
+      components() const override
       {
-        mesh.notify_ready_to_unpack(
-          handle,
-          [&fields](const auto &parent, const auto status, const auto &data) {
-            if (status != Triangulation<dim>::CELL_REFINE)
-              return;
-            const auto values =
-              Utilities::unpack<std::vector<double>>(data.begin(),
-                                                     data.end(),
-                                                     false);
-            for (unsigned int child = 0; child < parent->n_children(); ++child)
-              {
-                const auto cell = fields.cell_of(parent->child(child));
-                for (const unsigned int v : cell->vertex_indices())
-                  {
-                    const double *point_values =
-                      &values[(dim + 1) *
-                              CoarsenedDetail<dim>::lattice_point(child, v)];
-                    write_if_owned(
-                      fields.mutable_vector(),
-                      cell->vertex_dof_index(
-                        v,
-                        TransportedFields<dim>::level_set_component),
-                      point_values[0]);
-                    for (unsigned int d = 0; d < dim; ++d)
-                      write_if_owned(fields.mutable_level_set_gradient_vector(),
-                                     cell->vertex_dof_index(v, d),
-                                     point_values[1 + d]);
-                  }
-              }
-          });
+        std::vector<std::pair<unsigned int, unsigned int>> result = {
+          {0, TransportedFields<dim>::level_set_component}};
+        for (unsigned int d = 0; d < dim; ++d)
+          result.emplace_back(1, d);
+        return result;
       }
 
-    private:
-      static void
-      write_if_owned(typename TransportedFields<dim>::VectorType &vector,
-                     const types::global_dof_index                dof,
-                     const double                                 value)
-      {
-        if (vector.in_local_range(dof))
-          vector(dof) = value;
-      }
-
-      /** Value and gradient at each lattice point, in lattice order. */
+      /** Value and gradient at each lattice point of a cell to be refined. */
       std::vector<double>
-      children_vertex_values(
-        const TransportedFields<dim>                            &fields,
-        const typename Triangulation<dim>::active_cell_iterator &cell) const
+      pack(const typename Triangulation<dim>::cell_iterator &cell,
+           const typename Triangulation<dim>::CellStatus status) const override
       {
-        const unsigned int  n_points = Utilities::pow(3u, dim);
-        std::vector<double> values((dim + 1) * n_points);
+        if (status != Triangulation<dim>::CELL_REFINE)
+          return {};
+        std::vector<double> values((dim + 1) * FamilyLattice<dim>::n_points);
         const auto          dof_cell = fields.cell_of(cell);
-        for (unsigned int i = 0; i < n_points; ++i)
+        for (unsigned int i = 0; i < FamilyLattice<dim>::n_points; ++i)
           {
-            Point<dim> xi;
-            for (unsigned int d = 0, rest = i; d < dim; ++d, rest /= 3)
-              xi[d] = 0.5 * (rest % 3);
             Tensor<1, dim> gradient;
             values[(dim + 1) * i] =
-              hermite.value(fields, dof_cell, xi, limited, &gradient);
+              hermite.value(fields,
+                            dof_cell,
+                            FamilyLattice<dim>::unit_point(i),
+                            limited,
+                            &gradient);
             for (unsigned int d = 0; d < dim; ++d)
               values[(dim + 1) * i + 1 + d] = gradient[d];
           }
         return values;
       }
 
-      parallel::distributed::Triangulation<dim> &mesh;
-      const bool                                 limited;
-      FieldHermite<dim>                          hermite;
-      unsigned int                               handle;
+    private:
+      const TransportedFields<dim> &fields;
+      const bool                    limited;
+      FieldHermite<dim>             hermite;
     };
   } // namespace
 
@@ -358,6 +317,7 @@ namespace vefs
   bool
   adapt_mesh(parallel::distributed::Triangulation<dim>   &triangulation,
              TransportedFields<dim>                      &fields,
+             LevelSetGradient<dim>                       *level_set_gradient,
              const MeshLevels                            &levels,
              const unsigned int                           max_cycles,
              const LevelSetInterpolation                  interpolation,
@@ -422,7 +382,7 @@ namespace vefs
         // linear one it is not carried (a fifth of the data sent in 3D).
         using Transfer = VertexFieldTransfer<dim>;
         const bool with_gradient =
-          interpolation != LevelSetInterpolation::linear;
+          level_set_gradient && interpolation != LevelSetInterpolation::linear;
         std::vector<unsigned int> all_fields(fields.n_components);
         std::iota(all_fields.begin(), all_fields.end(), 0);
         std::vector<unsigned int> gradient(dim);
@@ -430,21 +390,28 @@ namespace vefs
         std::vector<typename Transfer::Slot> slots = {
           {&fields.vector(), all_fields}};
         if (with_gradient)
-          slots.push_back({&fields.level_set_gradient_vector(), gradient});
+          slots.push_back({&level_set_gradient->vector(), gradient});
         if (surface_ahead)
           slots.push_back({surface_ahead, {c}});
-        Transfer transfer(triangulation, fields, slots);
+        // Refined cells take the cubic level set, or the detail they kept
+        // (the one-change band refuses the cubic interpolations).
         std::unique_ptr<HermiteRefinement<dim>> hermite_refinement;
-        if (interpolation != LevelSetInterpolation::linear)
-          hermite_refinement =
-            std::make_unique<HermiteRefinement<dim>>(triangulation,
-                                                     fields,
-                                                     interpolation);
+        typename Transfer::LatticeSource       *lattice_source = nullptr;
+        if (with_gradient)
+          {
+            hermite_refinement =
+              std::make_unique<HermiteRefinement<dim>>(fields,
+                                                       *level_set_gradient,
+                                                       interpolation);
+            lattice_source = hermite_refinement.get();
+          }
         if (present_band != PresentBand::kept)
-          coarsened_detail->attach(triangulation,
-                                   fields.dof_handler,
-                                   fields.vector(),
-                                   fields.n_components);
+          {
+            AssertThrow(!lattice_source, ExcInternalError());
+            coarsened_detail->from_fields(fields);
+            lattice_source = coarsened_detail;
+          }
+        Transfer transfer(triangulation, fields, slots, lattice_source);
         triangulation.execute_coarsening_and_refinement();
 
         fields.setup_dofs();
@@ -461,21 +428,17 @@ namespace vefs
         // after the change would keep its old ghost layout.
         fields.swap(transferred[0]);
         if (with_gradient)
-          fields.swap_level_set_gradient(transferred[1]);
-        else
-          fields.initialize_vector(fields.mutable_level_set_gradient_vector());
+          level_set_gradient->swap(transferred[1]);
+        else if (level_set_gradient)
+          level_set_gradient->reinit(fields);
         if (surface_ahead)
           {
             surface_ahead->swap(transferred.back());
             fields.make_consistent(*surface_ahead);
           }
-        if (hermite_refinement)
-          hermite_refinement->unpack(fields);
-        if (present_band != PresentBand::kept)
-          coarsened_detail->unpack(triangulation,
-                                   fields.dof_handler,
-                                   fields.mutable_vector());
         fields.finalize();
+        if (with_gradient)
+          level_set_gradient->finalize(fields);
         changed = true;
       }
     return changed;
@@ -529,6 +492,7 @@ namespace vefs
   refine_ahead_of_surface(
     parallel::distributed::Triangulation<dim>   &triangulation,
     TransportedFields<dim>                      &fields,
+    LevelSetGradient<dim>                       &level_set_gradient,
     const MeshLevels                            &levels,
     const unsigned int                           max_cycles,
     const LevelSetInterpolation                  interpolation,
@@ -548,6 +512,7 @@ namespace vefs
                                 : PresentBand::refine_only;
         if (!adapt_mesh(triangulation,
                         fields,
+                        &level_set_gradient,
                         levels,
                         1,
                         interpolation,
@@ -568,6 +533,7 @@ namespace vefs
   template bool
   adapt_mesh<2>(parallel::distributed::Triangulation<2> &,
                 TransportedFields<2> &,
+                LevelSetGradient<2> *,
                 const MeshLevels &,
                 const unsigned int,
                 const LevelSetInterpolation,
@@ -577,6 +543,7 @@ namespace vefs
   template bool
   adapt_mesh<3>(parallel::distributed::Triangulation<3> &,
                 TransportedFields<3> &,
+                LevelSetGradient<3> *,
                 const MeshLevels &,
                 const unsigned int,
                 const LevelSetInterpolation,
@@ -592,6 +559,7 @@ namespace vefs
   template unsigned int
   refine_ahead_of_surface<2>(parallel::distributed::Triangulation<2> &,
                              TransportedFields<2> &,
+                             LevelSetGradient<2> &,
                              const MeshLevels &,
                              const unsigned int,
                              const LevelSetInterpolation,
@@ -601,6 +569,7 @@ namespace vefs
   template unsigned int
   refine_ahead_of_surface<3>(parallel::distributed::Triangulation<3> &,
                              TransportedFields<3> &,
+                             LevelSetGradient<3> &,
                              const MeshLevels &,
                              const unsigned int,
                              const LevelSetInterpolation,

@@ -77,14 +77,16 @@ namespace vefs
   template <int dim>
   void
   redistance(TransportedFields<dim>     &fields,
+             LevelSetGradient<dim>      &level_set_gradient,
              const LevelSetInterpolation interpolation)
   {
     FieldHermite<dim> hermite;
     const bool        cubic = interpolation != LevelSetInterpolation::linear;
     if (cubic)
       hermite.recover(fields,
-                      interpolation ==
-                        LevelSetInterpolation::gradient_augmented);
+                      interpolation == LevelSetInterpolation::gradient_augmented
+                        ? &level_set_gradient
+                        : nullptr);
     constexpr unsigned int c = TransportedFields<dim>::level_set_component;
 
     std::vector<Point<dim>>     crossings;
@@ -215,13 +217,18 @@ namespace vefs
           cubic ? all_normals[nearest[0]] : Tensor<1, dim>();
         if (gradient.norm() == 0 && distance > 0)
           gradient = sign * (node.point - point) / distance;
-        fields.set_level_set_gradient(node, gradient);
+        level_set_gradient.set(node, gradient);
       }
     fields.finalize();
+    level_set_gradient.finalize(fields);
   }
 
   template void
-  redistance<2>(TransportedFields<2> &, const LevelSetInterpolation);
+  redistance<2>(TransportedFields<2> &,
+                LevelSetGradient<2> &,
+                const LevelSetInterpolation);
   template void
-  redistance<3>(TransportedFields<3> &, const LevelSetInterpolation);
+  redistance<3>(TransportedFields<3> &,
+                LevelSetGradient<3> &,
+                const LevelSetInterpolation);
 } // namespace vefs

@@ -58,6 +58,7 @@ namespace vefs
         statistics.mesh_changes +=
           refine_ahead_of_surface(triangulation,
                                   fields,
+                                  level_set_gradient,
                                   levels,
                                   levels.max_level - levels.min_level,
                                   parameters.level_set_interpolation,
@@ -73,6 +74,7 @@ namespace vefs
     velocity.set_advection_velocity(fields, time);
     level_set_history.add_step(fields, tau);
     advect_along_characteristics(fields,
+                                 level_set_gradient,
                                  tau,
                                  locator,
                                  foot_interpolation,
@@ -82,13 +84,16 @@ namespace vefs
     if (level_set_history.enabled())
       {
         level_set_history.compose(fields,
+                                  level_set_gradient,
                                   locator,
                                   parameters.level_set_interpolation);
         remap = level_set_history.remap_due(time.cfl(), time.expected_cfl());
       }
     if (remap && parameters.redistancing_interval > 0 &&
         time.step() % parameters.redistancing_interval == 0)
-      redistance(fields, parameters.level_set_interpolation);
+      redistance(fields,
+                 level_set_gradient,
+                 parameters.level_set_interpolation);
     if (parameters.volume_correction)
       {
         const double shift = correct_volume(fields, volume_expected);
@@ -118,19 +123,23 @@ namespace vefs
                                    level_set_history.cells_between_remaps()));
         if (vefs::adapt_mesh(triangulation,
                              fields,
+                             &level_set_gradient,
                              levels,
                              1,
                              parameters.level_set_interpolation))
           ++statistics.mesh_changes;
-        level_set_history.remap(fields);
+        level_set_history.remap(fields, level_set_gradient);
       }
     return LiquidDomain<dim>(fields);
   }
 
   template <int dim>
   void
-  SurfaceTracker<dim>::set_initial_volume(const double volume)
+  SurfaceTracker<dim>::start(const TransportedFields<dim> &fields,
+                             const Function<dim>          &level_set,
+                             const double                  volume)
   {
+    level_set_gradient.interpolate(fields, level_set);
     volume_at_start = volume;
     volume_expected = volume;
   }

@@ -105,20 +105,18 @@ namespace
     triangulation.refine_global(dim == 2 ? 4 : 3);
     vefs::TransportedFields<dim> fields(triangulation, false, {});
     fields.setup_dofs();
+    vefs::LevelSetGradient<dim> level_set_gradient;
+    level_set_gradient.reinit(fields);
     for (const auto &node : fields.nodes())
       {
-        fields.mutable_vector()(
-          node.dofs[vefs::TransportedFields<dim>::level_set_component]) =
-          f.value(node.point);
-        const Tensor<1, dim> gradient = f.gradient(node.point);
-        for (unsigned int d = 0; d < dim; ++d)
-          fields.mutable_level_set_gradient_vector()(node.dofs[d]) =
-            gradient[d];
+        fields.set_level_set(node, f.value(node.point));
+        level_set_gradient.set(node, f.gradient(node.point));
       }
     fields.finalize();
+    level_set_gradient.finalize(fields);
 
     vefs::FieldHermite<dim> hermite;
-    hermite.recover(fields, advected_gradient);
+    hermite.recover(fields, advected_gradient ? &level_set_gradient : nullptr);
     double value_error = 0, gradient_error = 0;
     // Points inside the cells and on their faces and vertices.
     const double xis[4] = {0, 0.21, 0.5, 0.87};

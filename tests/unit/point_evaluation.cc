@@ -106,8 +106,10 @@ namespace
     Utilities::MPI::sum(reference, comm, reference);
     Utilities::MPI::sum(n_owners, comm, n_owners);
 
+    // The linear level set reads no gradient.
     const auto level_sets =
       vefs::level_set_at(fields,
+                         vefs::LevelSetGradient<dim>(),
                          points,
                          locator,
                          vefs::LevelSetInterpolation::linear);

@@ -2,10 +2,14 @@
 #define vefs_coarsened_detail_h
 
 #include <deal.II/distributed/tria.h>
-#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <vefs/fields/family_lattice.h>
+#include <vefs/fields/transported_fields.h>
+#include <vefs/fields/vertex_field_transfer.h>
+
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace vefs
@@ -24,56 +28,42 @@ namespace vefs
    * on the finer mesh, so the single change loses nothing against a change
    * before and one after the advection.
    *
-   * Usage: attach() before Triangulation::execute_coarsening_and_refinement(),
-   * unpack() after it and after the fields have been transferred (a refined
-   * cell that keeps detail gives its children their former values back),
+   * Usage: as the LatticeSource of the VertexFieldTransfer of each mesh
+   * change (from_fields() before it; the fields are the transfer's slot 0):
+   * cells to be coarsened pack their children's values, cells that keep
+   * detail from an earlier change pack it again, and a refined cell that
+   * kept detail gives its children their former values back.
    * update_ghosts() after the last change, lattice() in the advection,
    * clear() after it.
    */
   template <int dim>
-  class CoarsenedDetail
+  class CoarsenedDetail : public VertexFieldTransfer<dim>::LatticeSource
   {
   public:
     using VectorType = LinearAlgebra::distributed::Vector<double>;
+    using CellStatus = typename Triangulation<dim>::CellStatus;
 
     /** Points of the lattice of a family's vertices. */
-    static constexpr unsigned int n_points = dim == 2 ? 9 : 27;
+    static constexpr unsigned int n_points = FamilyLattice<dim>::n_points;
 
-    /**
-     * The lattice point of vertex @p v of child @p child: per direction the
-     * child's offset plus the vertex's, in half cells.
-     */
-    static unsigned int
-    lattice_point(const unsigned int child, const unsigned int v)
-    {
-      unsigned int index = 0, stride = 1;
-      for (unsigned int d = 0; d < dim; ++d, stride *= 3)
-        index += stride * (((child >> d) & 1) + ((v >> d) & 1));
-      return index;
-    }
-
-    /**
-     * Before a mesh change: cells to be coarsened will pack their children's
-     * values of the @p n_components first components of @p fields (Q1, the
-     * layout of @p dof_handler), and cells that keep detail from an earlier
-     * change pack it again. The mesh's pack callback refers to this object:
-     * it must neither move nor be destroyed before unpack().
-     */
+    /** The next change packs the detail of @p fields (all components). */
     void
-    attach(parallel::distributed::Triangulation<dim> &mesh,
-           const DoFHandler<dim>                     &dof_handler,
-           const VectorType                          &fields,
-           const unsigned int                         n_components);
+    from_fields(const TransportedFields<dim> &fields);
 
-    /**
-     * After the change and the transfer of @p fields (owned entries set,
-     * ghosts stale): keep the packed detail for the new cells; the children
-     * of a refined cell that kept detail take its lattice values.
-     */
+    std::vector<std::pair<unsigned int, unsigned int>>
+    components() const override;
+
+    std::vector<double>
+    pack(const typename Triangulation<dim>::cell_iterator &cell,
+         const CellStatus status) const override;
+
+    /** Forget the detail of the old mesh; keep() fills it anew. */
     void
-    unpack(parallel::distributed::Triangulation<dim> &mesh,
-           const DoFHandler<dim>                     &dof_handler,
-           VectorType                                &fields);
+    start_keeping(const Triangulation<dim> &mesh) override;
+
+    void
+    keep(const typename Triangulation<dim>::active_cell_iterator &cell,
+         const double *lattice) override;
 
     /** Give ghost cells the detail of their owners. Collective. */
     void
@@ -81,9 +71,8 @@ namespace vefs
 
     /**
      * The lattice values of @p cell (locally owned or ghost), point by
-     * point in lattice order (index sum_d a_d 3^d, a_d = 0, 1, 2 the
-     * offset in half cells), all components of a point together; nullptr if
-     * the cell has no detail.
+     * point in the order of FamilyLattice, all components of a point
+     * together; nullptr if the cell has no detail.
      */
     const double *
     lattice(const typename Triangulation<dim>::active_cell_iterator &cell) const
@@ -117,8 +106,9 @@ namespace vefs
     store(const typename Triangulation<dim>::active_cell_iterator &cell,
           const double                                            *lattice);
 
-    unsigned int n_components = 0;
-    unsigned int handle       = none;
+    /** The fields whose detail the next change packs (from_fields()). */
+    const TransportedFields<dim> *fields       = nullptr;
+    unsigned int                  n_components = 0;
     /** Per active cell index: where its lattice starts in values, or none. */
     std::vector<unsigned int> offsets;
     std::vector<double>       values;

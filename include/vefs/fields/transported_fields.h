@@ -127,22 +127,6 @@ namespace vefs
       fields(node.dofs[c]) = value;
     }
 
-    /** The level set gradient of the gradient-augmented transport. */
-    Tensor<1, dim>
-    level_set_gradient(const Node &node) const
-    {
-      Tensor<1, dim> gradient;
-      for (unsigned int d = 0; d < dim; ++d)
-        gradient[d] = gradient_of_level_set(node.dofs[d]);
-      return gradient;
-    }
-
-    void
-    set_level_set_gradient(const Node &node, const Tensor<1, dim> &gradient)
-    {
-      for (unsigned int d = 0; d < dim; ++d)
-        gradient_of_level_set(node.dofs[d]) = gradient[d];
-    }
     /** @} */
 
     /**
@@ -188,16 +172,6 @@ namespace vefs
       return fields(cell->vertex_dof_index(v, c));
     }
 
-    template <typename CellIterator>
-    Tensor<1, dim>
-    level_set_gradient_at(const CellIterator &cell, const unsigned int v) const
-    {
-      Tensor<1, dim> gradient;
-      for (unsigned int d = 0; d < dim; ++d)
-        gradient[d] = gradient_of_level_set(cell->vertex_dof_index(v, d));
-      return gradient;
-    }
-
     /** For a vertex whose degrees of freedom this rank owns. */
     template <typename CellIterator>
     void
@@ -231,25 +205,15 @@ namespace vefs
     void
     copy_to(VectorType &copy) const;
 
-    /** The same for the level set gradient. */
-    void
-    copy_level_set_gradient_to(VectorType &copy) const;
-
     /**
-     * Exchange the fields' vector (or the level set gradient's) with
-     * @p other, a vector of the same layout: the level set history lends
-     * its kept vectors to the fields' own interpolation and takes them back.
+     * Exchange the fields' vector with @p other, a vector of the same
+     * layout: the level set history lends its kept vectors to the fields'
+     * own interpolation and takes them back.
      */
     void
     swap(VectorType &other)
     {
       fields.swap(other);
-    }
-
-    void
-    swap_level_set_gradient(VectorType &other)
-    {
-      gradient_of_level_set.swap(other);
     }
 
     /**
@@ -271,25 +235,6 @@ namespace vefs
     {
       return fields;
     }
-
-    /**
-     * The gradient of the level set, carried along the characteristics with
-     * it by the gradient-augmented transport (FieldHermite): same layout
-     * as vector(), the derivative in direction d in the slot of velocity
-     * component d (the other slots are unused).
-     */
-    const VectorType &
-    level_set_gradient_vector() const
-    {
-      return gradient_of_level_set;
-    }
-
-    /** For the mesh transfer and the loading of a checkpoint only. */
-    VectorType &
-    mutable_level_set_gradient_vector()
-    {
-      return gradient_of_level_set;
-    }
     /** @} */
 
     /** Distribute degrees of freedom after a mesh change; fields are zero. */
@@ -309,19 +254,9 @@ namespace vefs
     void
     set_velocity(const Function<dim> &velocity);
 
-    /**
-     * Make hanging nodes and ghost entries consistent after a change (of
-     * the fields and of the level set gradient).
-     */
+    /** Make hanging nodes and ghost entries consistent after a change. */
     void
     finalize();
-
-    /**
-     * The same for the fields only, the level set gradient left as it is
-     * (the extension changes no level set).
-     */
-    void
-    finalize_fields_only();
 
     /** Update the ghost entries of the fields (no constraint changed). */
     void
@@ -388,8 +323,6 @@ namespace vefs
     const std::vector<unsigned int> periodic_directions;
     std::vector<Node>               owned_nodes;
     VectorType                      fields;
-    /** See level_set_gradient_vector(). */
-    VectorType gradient_of_level_set;
     /**
      * Whether every source of an owned constrained entry is owned or a ghost
      * (then distribute_constraints() uses the local lines below).

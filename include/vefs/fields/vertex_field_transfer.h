@@ -4,8 +4,10 @@
 #include <deal.II/distributed/tria.h>
 
 #include <vefs/compat/box_q1_values.h>
+#include <vefs/fields/family_lattice.h>
 #include <vefs/fields/transported_fields.h>
 
+#include <utility>
 #include <vector>
 
 namespace vefs
@@ -13,14 +15,24 @@ namespace vefs
   using namespace dealii;
 
   /**
-   * Carries chosen components of Q1 vectors with the layout of the fields
-   * through a change of the mesh. Each cell packs the values at its vertices
-   * only (a cell to be coarsened: at its children's corners), and a refined
-   * cell's children take the Q1 interpolant of their parent. deal.II's
-   * SolutionTransfer packs every component of every vector for every cell
-   * and interpolates with dense matrices of all dofs (80 x 80 for the ten
-   * fields in 3D); the level set gradient and the predicted surface use
-   * three and one of their ten slots.
+   * Carries vectors with the layout of the fields through a change of the
+   * mesh: the one transfer of vertex data in vefs (doc/code.md, "The
+   * fields").
+   *
+   * Vertex values: chosen components of chosen vectors (slots). Each cell
+   * packs the values at its vertices only (a cell to be coarsened: at its
+   * children's corners), and a refined cell's children take the Q1
+   * interpolant of their parent. deal.II's SolutionTransfer packs every
+   * component of every vector for every cell and interpolates with dense
+   * matrices of all dofs (80 x 80 for the ten fields in 3D); the level set
+   * gradient and the predicted surface use three and one of their ten
+   * slots.
+   *
+   * Lattice values, if a LatticeSource is given: values at the vertices of
+   * a family's children (FamilyLattice), which a refined cell's children
+   * take instead of the Q1 interpolant (the cubic level set, a detail kept
+   * from an earlier change), and which a coarsened cell or one that keeps
+   * detail hands back to the source after the change.
    *
    * Usage: construct before Triangulation::execute_coarsening_and_refinement(),
    * call unpack() after TransportedFields::setup_dofs().
@@ -31,6 +43,8 @@ namespace vefs
   public:
     using VectorType = typename TransportedFields<dim>::VectorType;
 
+    using CellStatus = typename Triangulation<dim>::CellStatus;
+
     /** The components of one vector to carry. */
     struct Slot
     {
@@ -38,9 +52,55 @@ namespace vefs
       std::vector<unsigned int> components;
     };
 
+    /** Where the lattice values of the cells come from and go to. */
+    class LatticeSource
+    {
+    public:
+      virtual ~LatticeSource() = default;
+
+      /**
+       * The (slot, component) of each value at a lattice point, the slots
+       * numbered as those of the transfer.
+       */
+      virtual std::vector<std::pair<unsigned int, unsigned int>>
+      components() const = 0;
+
+      /**
+       * What @p cell, about to change as @p status says, carries: the
+       * values at the lattice points, point by point, all components of a
+       * point together; empty for nothing. For a cell to be refined, the
+       * values its children's vertices take.
+       */
+      virtual std::vector<double>
+      pack(const typename Triangulation<dim>::cell_iterator &cell,
+           const CellStatus                                  status) const = 0;
+
+      /** Before the first keep() of a change. */
+      virtual void
+      start_keeping(const Triangulation<dim> &)
+      {
+      }
+
+      /**
+       * After the change: the lattice that @p cell (coarsened, or unchanged)
+       * packed.
+       */
+      virtual void
+      keep(const typename Triangulation<dim>::active_cell_iterator &,
+           const double *)
+      {
+        AssertThrow(false, ExcInternalError());
+      }
+    };
+
+    /**
+     * @p lattice_source, if given, must live until unpack() and take the
+     * slots of its components() from @p slots.
+     */
     VertexFieldTransfer(parallel::distributed::Triangulation<dim> &mesh,
                         const TransportedFields<dim>              &fields,
-                        const std::vector<Slot>                   &slots);
+                        const std::vector<Slot>                   &slots,
+                        LatticeSource *lattice_source = nullptr);
 
     /** The mesh's pack callback refers to this object: it must not move. */
     VertexFieldTransfer(const VertexFieldTransfer &) = delete;
@@ -51,7 +111,8 @@ namespace vefs
      * Write the carried values into @p vectors, one per slot in the same
      * order, set up with the layout of the new mesh and zero elsewhere
      * (owned entries only: call TransportedFields::finalize() or
-     * distribute_constraints() afterwards).
+     * distribute_constraints() afterwards): the vertex values first, then
+     * the lattice values over them, cell by cell.
      */
     void
     unpack(const TransportedFields<dim>    &fields,
@@ -73,6 +134,13 @@ namespace vefs
           const double                                            *values,
           const std::vector<VectorType *> &vectors) const;
 
+    /** The lattice values of a refined @p parent into its children. */
+    void
+    write_lattice(const TransportedFields<dim>                     &fields,
+                  const typename Triangulation<dim>::cell_iterator &parent,
+                  const double                                     *lattice,
+                  const std::vector<VectorType *> &vectors) const;
+
     parallel::distributed::Triangulation<dim> &mesh;
     std::vector<Slot>                          slots;
     /** Carried values per vertex: the components of all slots. */
@@ -80,6 +148,10 @@ namespace vefs
     /** The parent's vertices' weights at its children's vertices. */
     const ChildVertexWeights<dim> child_weights;
     unsigned int                  handle;
+    LatticeSource                *lattice_source;
+    /** The (slot, component) of each lattice value at a point. */
+    std::vector<std::pair<unsigned int, unsigned int>> lattice_components;
+    unsigned int                                       lattice_handle = 0;
   };
 } // namespace vefs
 

@@ -57,7 +57,8 @@ namespace vefs
   find_checkpoint(const std::string &output_directory, const MPI_Comm comm);
 
   /**
-   * Write the mesh, the fields, the level set @p history, @p state and the
+   * Write the mesh, the fields, the @p level_set_gradient, the level set
+   * @p history, @p state and the
    * parameters of the run (@p parameters_text) into checkpoint.new/ of
    * @p output_directory, then
    * make it checkpoint/ by renaming: a kill at any moment leaves a complete
@@ -68,13 +69,15 @@ namespace vefs
   write_checkpoint(const std::string            &output_directory,
                    const std::string            &parameters_text,
                    const TransportedFields<dim> &fields,
+                   const LevelSetGradient<dim>  &level_set_gradient,
                    const LevelSetHistory<dim>   &history,
                    const RunState<dim>          &state);
 
   /**
    * Load the mesh and the fields of the checkpoint in @p directory (from
    * find_checkpoint()) into @p triangulation, which holds the coarse mesh
-   * only, @p fields and @p history; return the state. Any number of ranks
+   * only, @p fields, @p level_set_gradient and @p history; return the
+   * state. Any number of ranks
    * (a checkpoint without a history line, as written before the remap
    * distance, leaves the history empty). Throws
    * CheckpointError, on all ranks, if the checkpoint is incomplete or
@@ -85,6 +88,7 @@ namespace vefs
   read_checkpoint(const std::string                         &directory,
                   parallel::distributed::Triangulation<dim> &triangulation,
                   TransportedFields<dim>                    &fields,
+                  LevelSetGradient<dim>                     &level_set_gradient,
                   LevelSetHistory<dim>                      &history);
 } // namespace vefs
 

@@ -6,6 +6,7 @@
 #include <vefs/compat/box_mesh_locator.h>
 #include <vefs/fields/coarsened_detail.h>
 #include <vefs/fields/transported_fields.h>
+#include <vefs/transport/level_set_gradient.h>
 #include <vefs/transport/transport_parameters.h>
 
 #include <array>
@@ -58,6 +59,7 @@ namespace vefs
   void
   advect_along_characteristics(
     TransportedFields<dim>     &fields,
+    LevelSetGradient<dim>      &level_set_gradient,
     const double                tau,
     const BoxMeshLocator<dim>  &locator,
     const FootInterpolation    &interpolation,
@@ -104,6 +106,7 @@ namespace vefs
   template <int dim>
   std::vector<std::pair<double, Tensor<1, dim>>>
   level_set_at(const TransportedFields<dim>  &fields,
+               const LevelSetGradient<dim>   &level_set_gradient,
                const std::vector<Point<dim>> &points,
                const BoxMeshLocator<dim>     &locator,
                const LevelSetInterpolation    interpolation);

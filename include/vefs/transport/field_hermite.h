@@ -2,6 +2,7 @@
 #define vefs_field_hermite_h
 
 #include <vefs/fields/transported_fields.h>
+#include <vefs/transport/level_set_gradient.h>
 
 #include <array>
 
@@ -22,9 +23,9 @@ namespace vefs
    *   node the derivatives of the cells' Q1 interpolants (central
    *   differences on a uniform mesh): O(h^3) per step.
    * - gradient augmented (Nave, Rosales & Seibold, J. Comput. Phys. 229,
-   *   2010): the gradient is the one carried along the characteristics in
-   *   TransportedFields::level_set_gradient_vector(), the mixed derivatives are
-   *   recovered from it the same way. The gradient holds what the nodal
+   *   2010): the gradient is the one carried along the characteristics
+   *   (LevelSetGradient), the mixed derivatives are recovered from it the
+   *   same way. The gradient holds what the nodal
    *   values alone cannot (a filament a few cells thin), so the
    *   interpolation stays accurate there.
    * The interpolant is continuous across cells.
@@ -38,10 +39,11 @@ namespace vefs
 
     /**
      * Make the nodal derivatives of the level set from the (ghosted) fields;
-     * with @p advected_gradient from the level set gradient of @p fields.
+     * if @p advected_gradient is given, from that gradient.
      */
     void
-    recover(const TransportedFields<dim> &fields, const bool advected_gradient);
+    recover(const TransportedFields<dim> &fields,
+            const LevelSetGradient<dim>  *advected_gradient = nullptr);
 
     /**
      * Also make the nodal derivatives of @p components (not the level set)

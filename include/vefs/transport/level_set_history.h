@@ -3,6 +3,7 @@
 
 #include <vefs/compat/box_mesh_locator.h>
 #include <vefs/fields/transported_fields.h>
+#include <vefs/transport/level_set_gradient.h>
 #include <vefs/transport/transport_parameters.h>
 
 #include <array>
@@ -49,12 +50,13 @@ namespace vefs
     add_step(const TransportedFields<dim> &fields, const double tau);
 
     /**
-     * Replace the level set of @p fields (after the advection of the step
-     * last added) by the base one seen through the kept steps; nothing if
-     * there is no base yet.
+     * Replace the level set of @p fields and its @p level_set_gradient
+     * (after the advection of the step last added) by the base ones seen
+     * through the kept steps; nothing if there is no base yet.
      */
     void
     compose(TransportedFields<dim>     &fields,
+            LevelSetGradient<dim>      &level_set_gradient,
             const BoxMeshLocator<dim>  &locator,
             const LevelSetInterpolation interpolation);
 
@@ -69,9 +71,13 @@ namespace vefs
     bool
     remap_due(const double cfl, const double next_cfl);
 
-    /** Make the level set of @p fields (on its current mesh) the base. */
+    /**
+     * Make the level set of @p fields (on its current mesh) and its
+     * @p level_set_gradient the base.
+     */
     void
-    remap(const TransportedFields<dim> &fields);
+    remap(const TransportedFields<dim> &fields,
+          const LevelSetGradient<dim>  &level_set_gradient);
 
     /** Add @p shift to the base level set as to the current one. */
     void

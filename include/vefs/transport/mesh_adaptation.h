@@ -6,6 +6,7 @@
 #include <vefs/base/cavity.h>
 #include <vefs/fields/coarsened_detail.h>
 #include <vefs/fields/transported_fields.h>
+#include <vefs/transport/level_set_gradient.h>
 #include <vefs/transport/transport_parameters.h>
 
 namespace vefs
@@ -175,7 +176,8 @@ namespace vefs
   };
 
   /**
-   * Refine and coarsen toward the target levels, transferring the fields,
+   * Refine and coarsen toward the target levels, transferring the fields
+   * (and @p level_set_gradient, if given: nullptr before it exists),
    * at most @p max_cycles times (each changes a cell by one level) or until
    * the mesh stops changing. Returns true if it changed. In the time loop
    * one cycle a step suffices: the band is wider than the surface moves.
@@ -198,6 +200,7 @@ namespace vefs
   adapt_mesh(
     parallel::distributed::Triangulation<dim>   &triangulation,
     TransportedFields<dim>                      &fields,
+    LevelSetGradient<dim>                       *level_set_gradient,
     const MeshLevels                            &levels,
     const unsigned int                           max_cycles,
     const LevelSetInterpolation                  interpolation,
@@ -247,6 +250,7 @@ namespace vefs
   refine_ahead_of_surface(
     parallel::distributed::Triangulation<dim>   &triangulation,
     TransportedFields<dim>                      &fields,
+    LevelSetGradient<dim>                       &level_set_gradient,
     const MeshLevels                            &levels,
     const unsigned int                           max_cycles,
     const LevelSetInterpolation                  interpolation,

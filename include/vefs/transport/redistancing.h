@@ -2,6 +2,7 @@
 #define vefs_redistancing_h
 
 #include <vefs/fields/transported_fields.h>
+#include <vefs/transport/level_set_gradient.h>
 #include <vefs/transport/transport_parameters.h>
 
 namespace vefs
@@ -15,13 +16,14 @@ namespace vefs
    * distance to the surface's crossings of cell edges, gathered from all
    * ranks, with the sign it had. The crossings are those of the level set as
    * the transport interpolates it (@p interpolation: Q1, or cubic Hermite,
-   * whose zero set differs from the Q1 one by O(h^2)); the level set
-   * gradient of those nodes becomes the unit vector away from the nearest
-   * crossing.
+   * whose zero set differs from the Q1 one by O(h^2)); the
+   * @p level_set_gradient of those nodes becomes the unit vector away from
+   * the nearest crossing.
    */
   template <int dim>
   void
   redistance(TransportedFields<dim>     &fields,
+             LevelSetGradient<dim>      &level_set_gradient,
              const LevelSetInterpolation interpolation);
 } // namespace vefs
 

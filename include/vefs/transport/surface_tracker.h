@@ -9,6 +9,7 @@
 #include <vefs/compat/box_mesh_locator.h>
 #include <vefs/fields/transported_fields.h>
 #include <vefs/transport/characteristics.h>
+#include <vefs/transport/level_set_gradient.h>
 #include <vefs/transport/level_set_history.h>
 #include <vefs/transport/liquid_domain.h>
 #include <vefs/transport/mesh_adaptation.h>
@@ -60,9 +61,15 @@ namespace vefs
                const TimeControl      &time,
                StepStatistics<dim>    &statistics);
 
-    /** The volume of the initial liquid, kept by the correction. */
+    /**
+     * Start from the initial @p level_set, which @p fields hold on the
+     * initial mesh (its gradient by central differences), and the
+     * @p volume of the initial liquid, kept by the correction.
+     */
     void
-    set_initial_volume(const double volume);
+    start(const TransportedFields<dim> &fields,
+          const Function<dim>          &level_set,
+          const double                  volume);
 
     /** Continue with the volumes of a checkpoint. */
     void
@@ -98,6 +105,19 @@ namespace vefs
       return level_set_history;
     }
 
+    /** The level set gradient, for the checkpoints. */
+    LevelSetGradient<dim> &
+    gradient()
+    {
+      return level_set_gradient;
+    }
+
+    const LevelSetGradient<dim> &
+    gradient() const
+    {
+      return level_set_gradient;
+    }
+
   private:
     const MeshParameters                      &mesh_parameters;
     const TransportParameters                 &parameters;
@@ -107,6 +127,8 @@ namespace vefs
     TimerOutput                               &timer;
     const FootInterpolation                    foot_interpolation;
     LevelSetHistory<dim>                       level_set_history;
+    /** Carried by the gradient-augmented transport; unread by the others. */
+    LevelSetGradient<dim> level_set_gradient;
     /**
      * The fields of the cells the band placement coarsened before the
      * advection, until the advection has read them ('Band placement =
