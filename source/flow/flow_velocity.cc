@@ -215,16 +215,11 @@ namespace vefs
       {
         TimerOutput::Scope scope(timer, "4 stress update");
         // The update reads the velocity components of the vector and writes
-        // the stress components of the fields: the fields' own vector serves
-        // with theta = 1, no copy needed.
-        if (theta < 1)
-          {
-            blended_velocity.sadd(1 - theta, theta, fields.vector());
-            blended_velocity.update_ghost_values();
-          }
+        // the stress components of the fields.
+        fields.blend_velocity_into(blended_velocity, theta);
         const StressUpdateReport report =
           update_stress(fields,
-                        theta < 1 ? blended_velocity : fields.vector(),
+                        blended_velocity,
                         domain,
                         rheology,
                         tau,

@@ -206,6 +206,25 @@ namespace vefs
     copy_to(VectorType &copy) const;
 
     /**
+     * The velocity the stress law of a step sees with 'Stress theta'
+     * @p theta: theta u + (1 - theta) u*, u the fields' velocity and u* in
+     * @p earlier (a copy_to() from before the flow step), into @p earlier,
+     * ghosts up to date; with theta = 1 a copy of the fields. Only the
+     * velocity slots of the result are meant.
+     */
+    void
+    blend_velocity_into(VectorType &earlier, const double theta) const
+    {
+      if (theta == 1)
+        {
+          copy_to(earlier);
+          return;
+        }
+      earlier.sadd(1 - theta, theta, fields);
+      earlier.update_ghost_values();
+    }
+
+    /**
      * Exchange the fields' vector with @p other, a vector of the same
      * layout: the level set history lends its kept vectors to the fields'
      * own interpolation and takes them back.
