@@ -108,6 +108,10 @@ namespace
       {
         return {1, error.what()};
       }
+    catch (const vefs::OutputError &error)
+      {
+        return {1, error.what()};
+      }
     catch (const dealii::ExceptionBase &error)
       {
         return unexpected_error(message_of(error), errors);

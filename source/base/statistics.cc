@@ -2,9 +2,12 @@
 
 #include <vefs/base/errors.h>
 #include <vefs/base/statistics.h>
+#include <vefs/base/write_failure.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 
@@ -134,13 +137,27 @@ namespace vefs
                     std::to_string(step) + " of the checkpoint";
         else
           {
+            // Into a new file first: a write that fails (a full disk) must
+            // not take the rows of the checkpoint with it.
             input.close();
-            file.open(path, std::ios::trunc);
-            for (const auto &line : kept)
-              file << line << '\n';
-            file.flush();
-            if (!file)
-              problem = "cannot write '" + path + "'";
+            const std::string next = path + ".new";
+            problem = checked_write(next, [&](std::ostream &out) {
+              for (const auto &line : kept)
+                out << line << '\n';
+            });
+            std::error_code error;
+            if (problem.empty())
+              std::filesystem::rename(next, path, error);
+            if (error)
+              problem = "cannot replace '" + path + "': " + error.message();
+            if (problem.empty())
+              {
+                file.open(path, std::ios::app);
+                if (!file)
+                  problem = write_failure(path);
+              }
+            else
+              std::filesystem::remove(next, error);
           }
       }
     problem = Utilities::MPI::broadcast(comm, problem, 0);
@@ -153,8 +170,20 @@ namespace vefs
   void
   StatisticsFile<dim>::write(const StepStatistics<dim> &row)
   {
-    if (!file.is_open())
-      return;
+    // Every rank checks the root's write: all stop alike if it failed.
+    std::string problem;
+    if (file.is_open())
+      problem = write_row(row);
+    std::ostringstream where;
+    where << "after step " << row.step << " (t = " << row.time << ")";
+    throw_if_write_failed(problem, where.str(), comm);
+  }
+
+  template <int dim>
+  std::string
+  StatisticsFile<dim>::write_row(const StepStatistics<dim> &row)
+  {
+    errno = 0;
     if (!header_written)
       {
         file
@@ -180,6 +209,7 @@ namespace vefs
       file << (c == 0 ? "" : " ") << std::setprecision(columns[c].precision)
            << columns[c].reader(row);
     file << std::endl;
+    return file ? std::string() : write_failure(path);
   }
 
   template class StatisticsFile<2>;

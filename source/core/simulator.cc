@@ -1,6 +1,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <vefs/base/write_failure.h>
 #include <vefs/core/health_check.h>
 #include <vefs/core/simulator.h>
 #include <vefs/flow/flow_velocity.h>
@@ -113,11 +114,14 @@ namespace vefs
         parameters.transport.exact_final_level_set,
         parameters.initial_liquid,
         parameters.cavity);
+    std::string problem;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
-        std::ofstream file(parameters.output_directory + "/parameters.prm");
-        file << parameters_text;
+        problem =
+          checked_write(parameters.output_directory + "/parameters.prm",
+                        [&](std::ostream &out) { out << parameters_text; });
       }
+    throw_if_write_failed(problem, "before the first step", comm);
   }
 
   template <int dim>
@@ -489,7 +493,11 @@ namespace vefs
     if (time.is_output_step())
       {
         TimerOutput::Scope scope(timer, "output");
-        visualization.write(fields, flow, domain.fractions(), statistics.time);
+        visualization.write(fields,
+                            flow,
+                            domain.fractions(),
+                            statistics.step,
+                            statistics.time);
         last_output_step = statistics.step;
       }
 
@@ -516,12 +524,24 @@ namespace vefs
                        const bool               state_is_good)
   {
     // Keep the state the run ended with for a look, if it can be shown.
-    const bool written = state_is_good && last_output_step == time.step();
-    if (!written && fields_are_finite(fields))
-      visualization.write(fields, flow, domain.fractions(), time.time());
-    std::string what = problem;
+    const bool  written = state_is_good && last_output_step == time.step();
+    std::string what    = problem;
     while (!what.empty() && what.back() == '.')
       what.pop_back();
+    if (!written && fields_are_finite(fields))
+      try
+        {
+          visualization.write(fields,
+                              flow,
+                              domain.fractions(),
+                              time.step(),
+                              time.time());
+        }
+      catch (const OutputError &error)
+        {
+          what += " (and the state could not be written: " +
+                  std::string(error.what()) + ")";
+        }
     std::ostringstream message;
     message << "step " << step << " (t = " << time.time() << "): " << what;
     if (step > 0)

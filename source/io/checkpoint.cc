@@ -1,13 +1,18 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/solution_transfer.h>
 
+#include <vefs/base/write_failure.h>
+#include <vefs/io/abort_guard.h>
 #include <vefs/io/checkpoint.h>
+#include <vefs/io/output_directory.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cinttypes>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -311,23 +316,84 @@ namespace vefs
     problem = Utilities::MPI::broadcast(comm, problem, 0);
     if (!problem.empty())
       return problem;
+    // A failed write leaves no partial checkpoint (doc/reliability.md,
+    // "Full disks").
+    const auto failed = [&](const std::string &what) {
+      if (root)
+        {
+          std::error_code ignored;
+          fs::remove_all(next, ignored);
+        }
+      return what;
+    };
 
-    {
-      parallel::distributed::
-        SolutionTransfer<dim, typename TransportedFields<dim>::VectorType>
-          transfer(fields.dof_handler);
-      // The level set gradient as well: the gradient augmented transport
-      // carries it (format 1 did not save it, and resumed such runs
-      // differently).
-      // And the steps since the last remap of the level set.
-      std::vector<const typename TransportedFields<dim>::VectorType *> vectors{
-        &fields.vector(),
-        &level_set_gradient.vector()};
-      for (const auto *vector : history.vectors())
-        vectors.push_back(vector);
-      transfer.prepare_for_serialization(vectors);
-      triangulation.save(next + "/mesh");
-    }
+    // The level set gradient as well: the gradient augmented transport
+    // carries it (format 1 did not save it, and resumed such runs
+    // differently). And the steps since the last remap of the level set.
+    std::vector<const typename TransportedFields<dim>::VectorType *> vectors{
+      &fields.vector(),
+      &level_set_gradient.vector()};
+    for (const auto *vector : history.vectors())
+      vectors.push_back(vector);
+
+    // Room for it first: p4est's save aborts the process if a write fails.
+    // SolutionTransfer writes every dof of every cell of each vector.
+    const double needed =
+      1.1 * static_cast<double>(triangulation.n_global_active_cells()) *
+      (vectors.size() * fields.fe.n_dofs_per_cell() * sizeof(double) + 64);
+    if (root)
+      {
+        const double free = static_cast<double>(free_bytes(output_directory));
+        if (free < needed)
+          {
+            std::ostringstream text;
+            text << "cannot write '" << next
+                 << "': no space left on the device (about "
+                 << std::setprecision(3) << needed / 1e6 << " MB needed, "
+                 << free / 1e6 << " MB free)";
+            problem = text.str();
+          }
+      }
+    problem = Utilities::MPI::broadcast(comm, problem, 0);
+    if (!problem.empty())
+      return failed(problem);
+
+    try
+      {
+        std::ostringstream message;
+        message << "the checkpoint of step " << state.statistics.step
+                << " (t = " << state.statistics.time
+                << ") was not written: cannot write '" << next
+                << "/mesh': p4est stopped (is the disk full?); the "
+                   "statistics end with step "
+                << state.statistics.step;
+        if (fs::exists(output_directory + "/" + CheckpointNames::current))
+          message << ", the last checkpoint is in " << output_directory << "/"
+                  << CheckpointNames::current << "/";
+        const AbortGuard guard(message.str(),
+                               {next, lock_file(output_directory)});
+        parallel::distributed::
+          SolutionTransfer<dim, typename TransportedFields<dim>::VectorType>
+            transfer(fields.dof_handler);
+        transfer.prepare_for_serialization(vectors);
+        errno = 0;
+        triangulation.save(next + "/mesh");
+      }
+    catch (const ExceptionBase &)
+      {
+        problem = write_failure(next);
+      }
+    catch (const std::exception &)
+      {
+        problem = write_failure(next);
+      }
+    // Open MPI's MPI-IO (OMPIO) reports a failed write on the terminal but
+    // not to deal.II: a disk left without a byte may hold a truncated file.
+    if (root && problem.empty() && free_bytes(output_directory) == 0)
+      problem = "cannot write '" + next + "': " + write_failure_cause(ENOSPC);
+    for (const std::string &text : Utilities::MPI::all_gather(comm, problem))
+      if (!text.empty())
+        return failed(text);
     // The files of every rank are complete before rank 0 lists them.
     MPI_Barrier(comm);
 
@@ -335,12 +401,11 @@ namespace vefs
       try
         {
           {
-            std::ofstream file(next + "/parameters.prm");
-            file << parameters_text;
-            file.close();
-            if (!file)
-              throw std::runtime_error("cannot write '" + next +
-                                       "/parameters.prm'");
+            const std::string written =
+              checked_write(next + "/parameters.prm",
+                            [&](std::ostream &out) { out << parameters_text; });
+            if (!written.empty())
+              throw std::runtime_error(written);
           }
           const auto        &s = state.statistics;
           std::ostringstream text;
@@ -374,11 +439,12 @@ namespace vefs
           text << '\n';
           text << file_lines(next) << "end\n";
           {
-            std::ofstream file(next + "/state", std::ios::binary);
-            file << sealed(text.str());
-            file.close();
-            if (!file)
-              throw std::runtime_error("cannot write '" + next + "/state'");
+            const std::string written =
+              checked_write(next + "/state", [&](std::ostream &out) {
+                out << sealed(text.str());
+              });
+            if (!written.empty())
+              throw std::runtime_error(written);
           }
           // Two renames: between them checkpoint.old is the complete one.
           // The one before stays as checkpoint.old: --resume falls back to
@@ -400,7 +466,8 @@ namespace vefs
         {
           problem = error.what();
         }
-    return Utilities::MPI::broadcast(comm, problem, 0);
+    problem = Utilities::MPI::broadcast(comm, problem, 0);
+    return problem.empty() ? problem : failed(problem);
   }
 
   template <int dim>

@@ -1,9 +1,11 @@
 #include <deal.II/base/mpi.h>
 
+#include <vefs/base/errors.h>
 #include <vefs/base/stop_signal.h>
 #include <vefs/io/checkpoint.h>
 #include <vefs/io/checkpoint_schedule.h>
 
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -86,16 +88,18 @@ namespace vefs
       output_directory + "/" + CheckpointNames::current;
     std::ostringstream where;
     where << "step " << step << " (t = " << time << ")";
+    // A run that cannot write its checkpoints would lose all since the
+    // last one at the next kill: it stops (doc/reliability.md, "Full
+    // disks").
     if (!problem.empty())
       {
-        const std::string failure =
-          "the checkpoint of " + where.str() + " was not written: " + problem;
-        if (signal != 0 || planned_stop)
-          throw SolverError(failure + "; the statistics end with step " +
-                            std::to_string(step));
-        if (Utilities::MPI::this_mpi_process(comm) == 0)
-          std::cerr << "vefs: warning: " << failure << std::endl;
-        return {};
+        std::error_code error;
+        const bool has_checkpoint = std::filesystem::exists(directory, error);
+        throw OutputError(
+          "the checkpoint of " + where.str() + " was not written: " + problem +
+          "; the statistics end with step " + std::to_string(step) +
+          (has_checkpoint ? ", the last checkpoint is in " + directory + "/"
+                          : ""));
       }
     const std::string resume_hint = "; the checkpoint is in " + directory +
                                     "/, continue with: vefs --resume " +

@@ -129,6 +129,12 @@ namespace vefs
     }
   } // namespace
 
+  std::string
+  lock_file(const std::string &directory)
+  {
+    return directory + "/" + lock_name;
+  }
+
   OutputDirectory::OutputDirectory(const std::string &directory,
                                    const MPI_Comm     comm,
                                    const bool         resume)

@@ -1,9 +1,13 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <vefs/base/errors.h>
+#include <vefs/base/write_failure.h>
 #include <vefs/io/visualization.h>
 
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace vefs
 {
@@ -85,6 +89,7 @@ namespace vefs
   Visualization<dim>::write(const TransportedFields<dim> &fields,
                             const StokesStep<dim>        &flow,
                             const Vector<float>          &liquid_fraction,
+                            const unsigned int            step,
                             const double                  time)
   {
     const auto    &triangulation = fields.dof_handler.get_triangulation();
@@ -131,25 +136,66 @@ namespace vefs
                                  interpretation);
       }
 
-    Vector<float> rank(triangulation.n_active_cells());
-    rank = Utilities::MPI::this_mpi_process(comm);
+    Vector<float> rank_of_cell(triangulation.n_active_cells());
+    rank_of_cell = Utilities::MPI::this_mpi_process(comm);
     data_out.add_data_vector(liquid_fraction, "liquid_fraction");
-    data_out.add_data_vector(rank, "mpi_rank");
+    data_out.add_data_vector(rank_of_cell, "mpi_rank");
     data_out.build_patches();
 
-    const unsigned int counter = series.size();
-    const std::string  name =
-      data_out.write_vtu_with_pvtu_record(directory + "/",
-                                          "solution",
-                                          counter,
-                                          comm,
-                                          5);
-    series.emplace_back(time, name);
-
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
+    // The names of DataOut::write_vtu_with_pvtu_record(), whose writes
+    // are not checked: a full disk would leave truncated files and the run
+    // would go on.
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const std::string  stem =
+      "solution_" + Utilities::int_to_string(series.size(), 5);
+    const auto piece = [&](const unsigned int r) {
+      return stem + "." +
+             Utilities::int_to_string(r,
+                                      Utilities::needed_digits(n_ranks - 1)) +
+             ".vtu";
+    };
+    const std::string name = stem + ".pvtu";
+    std::string       problem =
+      checked_write(directory + "/" + piece(rank),
+                    [&](std::ostream &out) { data_out.write_vtu(out); });
+    if (rank == 0 && problem.empty())
       {
-        std::ofstream pvd(directory + "/solution.pvd");
-        DataOutBase::write_pvd_record(pvd, series);
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(piece(r));
+        problem = checked_write(directory + "/" + name, [&](std::ostream &out) {
+          data_out.write_pvtu_record(out, pieces);
+        });
+      }
+    std::ostringstream where;
+    where << "after step " << step << " (t = " << time << ")";
+    // The series names the file only once every piece is written.
+    throw_if_write_failed(problem, where.str(), comm);
+    series.emplace_back(time, name);
+    // Written anew and renamed: a failed write keeps the series so far.
+    if (rank == 0)
+      {
+        const std::string pvd = directory + "/solution.pvd";
+        problem = checked_write(pvd + ".new", [&](std::ostream &out) {
+          DataOutBase::write_pvd_record(out, series);
+        });
+        std::error_code error;
+        if (problem.empty())
+          std::filesystem::rename(pvd + ".new", pvd, error);
+        else
+          std::filesystem::remove(pvd + ".new", error);
+        if (problem.empty() && error)
+          problem = "cannot replace '" + pvd + "': " + error.message();
+      }
+    try
+      {
+        throw_if_write_failed(problem, where.str(), comm);
+      }
+    catch (const OutputError &)
+      {
+        series.pop_back();
+        throw;
       }
   }
 

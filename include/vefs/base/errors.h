@@ -6,7 +6,7 @@
 namespace vefs
 {
   /**
-   * The three ways a run stops with a message instead of a result; main()
+   * The four ways a run stops with a message instead of a result; main()
    * prints the message and exits with a non-zero status. They live on the
    * ground floor so that any module may throw them without depending on the
    * module that reads the input, writes the checkpoints or solves the flow.
@@ -34,6 +34,16 @@ namespace vefs
    * finite): the run stops with this message.
    */
   class SolverError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /**
+   * A result that could not be written (a full disk): the run stops with
+   * this message, which names the file, the step and the cause.
+   */
+  class OutputError : public std::runtime_error
   {
   public:
     using std::runtime_error::runtime_error;

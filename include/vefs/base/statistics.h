@@ -146,10 +146,18 @@ namespace vefs
     std::string
     non_finite_column(const StepStatistics<dim> &row) const;
 
+    /**
+     * Append @p row (on the root; collective): if the write fails, throws
+     * OutputError on every rank.
+     */
     void
     write(const StepStatistics<dim> &row);
 
   private:
+    /** Append @p row; what went wrong, or "". */
+    std::string
+    write_row(const StepStatistics<dim> &row);
+
     struct Column
     {
       std::string  name;

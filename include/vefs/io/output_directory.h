@@ -17,6 +17,10 @@ namespace vefs
    * runs never mix; a @p resume keeps them. Every problem throws InputError
    * on all ranks.
    */
+  /** The lock file of the output directory @p directory. */
+  std::string
+  lock_file(const std::string &directory);
+
   class OutputDirectory
   {
   public:

@@ -20,10 +20,15 @@ namespace vefs
   public:
     explicit Visualization(const std::string &directory);
 
+    /**
+     * Write the state after @p step (at @p time); collective. A write that
+     * fails (a full disk) throws OutputError on every rank.
+     */
     void
     write(const TransportedFields<dim> &fields,
           const StokesStep<dim>        &flow,
           const Vector<float>          &liquid_fraction,
+          const unsigned int            step,
           const double                  time);
 
     /** The .pvtu file written last, relative to the directory; or "". */
