@@ -202,12 +202,10 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ostringstream               text;
-  check_fields<2>(text);
-  check_fields<3>(text);
-  check_blocks<2>(text);
-  check_blocks<3>(text);
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    std::cout << text.str();
+  return unit_test::run(argc, argv, [](std::ostream &out) {
+    check_fields<2>(out);
+    check_fields<3>(out);
+    check_blocks<2>(out);
+    check_blocks<3>(out);
+  });
 }

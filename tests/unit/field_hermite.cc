@@ -152,12 +152,16 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ostringstream               text;
-  check<2>(text, "cubic, gradient augmented", cubic<2>(), true);
-  check<3>(text, "cubic, gradient augmented", cubic<3>(), true);
-  check<2>(text, "quadratic in each, recovered", quadratic_in_each<2>(), false);
-  check<3>(text, "quadratic in each, recovered", quadratic_in_each<3>(), false);
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    std::cout << text.str();
+  return unit_test::run(argc, argv, [](std::ostream &out) {
+    check<2>(out, "cubic, gradient augmented", cubic<2>(), true);
+    check<3>(out, "cubic, gradient augmented", cubic<3>(), true);
+    check<2>(out,
+             "quadratic in each, recovered",
+             quadratic_in_each<2>(),
+             false);
+    check<3>(out,
+             "quadratic in each, recovered",
+             quadratic_in_each<3>(),
+             false);
+  });
 }

@@ -230,12 +230,10 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ostringstream               text;
-  check_plane<2>(text);
-  check_plane<3>(text);
-  check_ball<2>(text, 4, 2e-4, 1e-4);
-  check_ball<3>(text, 2, 1e-2, 5e-3);
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    std::cout << text.str();
+  return unit_test::run(argc, argv, [](std::ostream &out) {
+    check_plane<2>(out);
+    check_plane<3>(out);
+    check_ball<2>(out, 4, 2e-4, 1e-4);
+    check_ball<3>(out, 2, 1e-2, 5e-3);
+  });
 }

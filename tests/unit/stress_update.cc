@@ -249,10 +249,8 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ostringstream               text;
-  check_updates(text);
-  check_field_update(text);
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    std::cout << text.str();
+  return unit_test::run(argc, argv, [](std::ostream &out) {
+    check_updates(out);
+    check_field_update(out);
+  });
 }

@@ -7,6 +7,7 @@
 // does not hold) when they are not.
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 
 #include <cmath>
@@ -19,6 +20,22 @@
 
 namespace unit_test
 {
+  /**
+   * The main() of a unit test: MPI started, @p checks writes the output,
+   * which rank 0 prints (so that 1 and 2 ranks print the same).
+   */
+  template <typename Checks>
+  int
+  run(int argc, char **argv, const Checks &checks)
+  {
+    dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    std::ostringstream                       text;
+    checks(text);
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << text.str();
+    return 0;
+  }
+
   /** "label: below bound", or "label: VALUE, NOT below bound". */
   inline void
   check_below(std::ostream      &out,

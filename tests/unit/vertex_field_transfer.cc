@@ -246,13 +246,11 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ostringstream               text;
-  for (const bool with_lattice : {false, true})
-    {
-      check<2>(text, with_lattice);
-      check<3>(text, with_lattice);
-    }
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    std::cout << text.str();
+  return unit_test::run(argc, argv, [](std::ostream &out) {
+    for (const bool with_lattice : {false, true})
+      {
+        check<2>(out, with_lattice);
+        check<3>(out, with_lattice);
+      }
+  });
 }
