@@ -70,17 +70,36 @@ namespace vefs
     Tensor<1, dim>
     velocity(const Node &node) const
     {
-      Tensor<1, dim> u;
-      for (unsigned int d = 0; d < dim; ++d)
-        u[d] = fields(node.dofs[d]);
-      return u;
+      return velocity_slots(fields, node);
     }
 
     void
     set_velocity(const Node &node, const Tensor<1, dim> &u)
     {
+      set_velocity_slots(fields, node, u);
+    }
+
+    /**
+     * The velocity slots of @p vector, a vector of this layout, at
+     * @p node: for the vectors that keep a vector field in them (the
+     * level set gradient).
+     */
+    static Tensor<1, dim>
+    velocity_slots(const VectorType &vector, const Node &node)
+    {
+      Tensor<1, dim> u;
       for (unsigned int d = 0; d < dim; ++d)
-        fields(node.dofs[d]) = u[d];
+        u[d] = vector(node.dofs[d]);
+      return u;
+    }
+
+    static void
+    set_velocity_slots(VectorType           &vector,
+                       const Node           &node,
+                       const Tensor<1, dim> &u)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        vector(node.dofs[d]) = u[d];
     }
 
     double
@@ -138,9 +157,19 @@ namespace vefs
     Tensor<1, dim>
     velocity_at(const CellIterator &cell, const unsigned int v) const
     {
+      return velocity_slots_at(fields, cell, v);
+    }
+
+    /** The velocity slots of @p vector (this layout) at a cell's vertex. */
+    template <typename CellIterator>
+    static Tensor<1, dim>
+    velocity_slots_at(const VectorType   &vector,
+                      const CellIterator &cell,
+                      const unsigned int  v)
+    {
       Tensor<1, dim> u;
       for (unsigned int d = 0; d < dim; ++d)
-        u[d] = fields(cell->vertex_dof_index(v, d));
+        u[d] = vector(cell->vertex_dof_index(v, d));
       return u;
     }
 

@@ -46,18 +46,14 @@ namespace vefs
     Tensor<1, dim>
     at(const Node &node) const
     {
-      Tensor<1, dim> result;
-      for (unsigned int d = 0; d < dim; ++d)
-        result[d] = gradient(node.dofs[d]);
-      return result;
+      return TransportedFields<dim>::velocity_slots(gradient, node);
     }
 
     /** Writes the owned entry only: call finalize() after the last one. */
     void
     set(const Node &node, const Tensor<1, dim> &value)
     {
-      for (unsigned int d = 0; d < dim; ++d)
-        gradient(node.dofs[d]) = value[d];
+      TransportedFields<dim>::set_velocity_slots(gradient, node, value);
     }
 
     /**
@@ -67,10 +63,7 @@ namespace vefs
     Tensor<1, dim>
     at(const CellIterator &cell, const unsigned int v) const
     {
-      Tensor<1, dim> result;
-      for (unsigned int d = 0; d < dim; ++d)
-        result[d] = gradient(cell->vertex_dof_index(v, d));
-      return result;
+      return TransportedFields<dim>::velocity_slots_at(gradient, cell, v);
     }
 
     /** Hanging nodes and ghost entries consistent after a change. */
