@@ -1,4 +1,4 @@
-# Writes that fail (doc/reliability.md, "Full disks"): a run whose files
+# Writes that fail (doc/checkpoints.md, "Full disks"): a run whose files
 # cannot be written stops on every rank with one message naming the file,
 # the step and the cause, exit status 1, no lock and no partial checkpoint
 # left, and the last checkpoint resumes. The disk is made full for chosen

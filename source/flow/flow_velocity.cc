@@ -160,7 +160,7 @@ namespace vefs
                                         const double                  tau)
   {
     // Contact walls: solve again while the contact set changes
-    // (doc/method.md, "Walls"); a few times at the most. Until a solve
+    // (doc/walls.md, "Contact walls"); a few times at the most. Until a solve
     // leaves the set unchanged the solves only have to tell which nodes
     // touch: loosely; the step ends with a full solve that leaves the set
     // unchanged too.

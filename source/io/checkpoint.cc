@@ -316,7 +316,7 @@ namespace vefs
     problem = Utilities::MPI::broadcast(comm, problem, 0);
     if (!problem.empty())
       return problem;
-    // A failed write leaves no partial checkpoint (doc/reliability.md,
+    // A failed write leaves no partial checkpoint (doc/checkpoints.md,
     // "Full disks").
     const auto failed = [&](const std::string &what) {
       if (root)

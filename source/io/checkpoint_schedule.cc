@@ -89,7 +89,7 @@ namespace vefs
     std::ostringstream where;
     where << "step " << step << " (t = " << time << ")";
     // A run that cannot write its checkpoints would lose all since the
-    // last one at the next kill: it stops (doc/reliability.md, "Full
+    // last one at the next kill: it stops (doc/checkpoints.md, "Full
     // disks").
     if (!problem.empty())
       {

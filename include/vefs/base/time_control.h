@@ -56,7 +56,7 @@ namespace vefs
   };
 
   /**
-   * The clock of a run (doc/method.md, "One time step", step 1): the step
+   * The clock of a run (doc/time_step_surface.md, step 1): the step
    * number, the time, the length and CFL number of the step under way, the
    * end time and the output times the steps land on. It chooses a step from
    * the speeds of the last one; it holds no field.

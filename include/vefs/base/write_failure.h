@@ -36,7 +36,7 @@ namespace vefs
    * Collective: if any rank has a @p problem (non-empty), throw
    * OutputError on every rank with the first rank's problem and
    * @p where (e.g. "after step 12 (t = 0.1)") appended; the run then stops
-   * on all ranks alike (doc/reliability.md, "Full disks").
+   * on all ranks alike (doc/checkpoints.md, "Full disks").
    */
   void
   throw_if_write_failed(const std::string &problem,

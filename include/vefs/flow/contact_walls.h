@@ -17,8 +17,8 @@
 namespace vefs
 {
   /**
-   * The seed's Signorini-like walls (doc/method.md, "Walls"): the liquid may
-   * leave a contact wall but never cross it, u.n <= 0, with a compressive
+   * The seed's Signorini-like walls (doc/walls.md, "Contact walls"): the liquid
+   * may leave a contact wall but never cross it, u.n <= 0, with a compressive
    * normal traction where u.n = 0. Solved as an active set on the velocity
    * degrees of freedom normal to the wall: every wet one starts in contact (u.n
    * = 0 imposed); after a solve, one whose reaction pulls the liquid toward the

@@ -12,7 +12,7 @@
 namespace vefs
 {
   /**
-   * The velocity of a free-surface flow (doc/method.md, "One time step",
+   * The velocity of a free-surface flow (doc/time_step_flow.md,
    * steps 7-9): the Stokes-like step on the liquid domain, solved again
    * while the contact set changes, then the copy of the new velocity to the
    * transported fields, the stress update and the extension of both beyond

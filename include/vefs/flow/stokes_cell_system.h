@@ -19,7 +19,7 @@ namespace vefs
 {
   /**
    * The weak form of the diffusion step on the liquid part of one cell
-   * (doc/method.md, "One time step", step 7), Q1-Q1 with PSPG: the cell matrix
+   * (doc/time_step_flow.md, step 7), Q1-Q1 with PSPG: the cell matrix
    * and right-hand side, and the two pieces of the Schur-complement
    * preconditioner (the pressure Laplacian weighted by tau/rho + tau_K, with
    * a penalty for p = 0 on the free surface, and the lumped pressure mass

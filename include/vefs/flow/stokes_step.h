@@ -25,8 +25,8 @@
 namespace vefs
 {
   /**
-   * The diffusion (correction) step of the splitting, doc/method.md,
-   * "One time step", step 7: the Stokes-like problem
+   * The diffusion (correction) step of the splitting, doc/time_step_flow.md,
+   * step 7: the Stokes-like problem
    *   rho (u - u*)/tau - div(2 mu eps(u) + k sigma*) + grad p = rho g,
    *   div u = 0
    * on the liquid domain psi < 0, cut out of the cells the free surface
@@ -71,7 +71,7 @@ namespace vefs
 
     /**
      * With contact walls: update the contact set from the last solution
-     * (doc/method.md, "Walls"). Returns true if it changed; then the
+     * (doc/walls.md, "Contact walls"). Returns true if it changed; then the
      * constraints and the rows of the changed unknowns are remade, and the step
      * must be solved again (not assembled).
      */

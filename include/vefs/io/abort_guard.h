@@ -12,7 +12,7 @@ namespace vefs
    * prints @p message, removes @p paths (the partial checkpoint, the lock
    * of the output directory) and ends all ranks with status 1 through
    * MPI_Abort, instead of a SIGABRT with no word from vefs
-   * (doc/reliability.md, "Full disks"). One guard at a time.
+   * (doc/checkpoints.md, "Full disks"). One guard at a time.
    */
   class AbortGuard
   {

@@ -24,7 +24,7 @@ namespace vefs
 
   /**
    * How the stress is advanced by the velocity gradient of the step, after
-   * the diffusion step (doc/method.md, "One time step", step 9).
+   * the diffusion step (doc/time_step_flow.md, step 9).
    */
   enum class StressUpdate
   {
@@ -82,8 +82,8 @@ namespace vefs
 
   /**
    * The constitutive law of doc/method.md ("Equations") as the diffusion
-   * step sees it at one point, once sigma is eliminated (doc/method.md, "One
-   * time step", step 7):
+   * step sees it at one point, once sigma is eliminated (doc/time_step_flow.md,
+   * "The stress in the Stokes step"):
    *   sigma^{n+1}(u) = k [sigma* + tau (grad u sigma* + sigma* grad u^T)
    *                       + tau (2 eta_p / lambda) eps(u)],
    *   k = lambda / (lambda + alpha tau),

@@ -22,7 +22,7 @@ namespace vefs
   };
 
   /**
-   * Step 9 of doc/method.md ("One time step"): the new stress sigma^{n+1} at
+   * Step 9 of doc/time_step_flow.md: the new stress sigma^{n+1} at
    * the nodes of liquid cells, from the advected stress sigma* that @p fields
    * holds there and the new velocity (already copied into @p fields). Each
    * liquid cell carries the stress of its vertices by a velocity gradient:

@@ -40,7 +40,7 @@ namespace vefs
   };
 
   /**
-   * Advection step of the splitting (doc/method.md, "One time step",
+   * Advection step of the splitting (doc/time_step_surface.md,
    * step 2): every field takes at a node x its old value at the foot of the
    * characteristic,
    *   X(x) = x - tau u(x - tau/2 u(x)),

@@ -9,8 +9,8 @@ namespace vefs
 {
   /**
    * The gradient of the level set that the gradient-augmented transport
-   * carries along the characteristics with it (doc/method.md, "One time
-   * step"): at each node, beside the level set value, the gradient
+   * carries along the characteristics with it (doc/time_step_surface.md,
+   * step 2): at each node, beside the level set value, the gradient
    * grad psi, moved by grad psi_new(x) = J^T grad psi_old(X(x)).
    * It is the nodal data of the cubic Hermite level set (FieldHermite).
    * The other transports leave it unread.

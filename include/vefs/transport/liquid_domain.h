@@ -14,7 +14,7 @@ namespace vefs
   /**
    * The liquid as the flow step sees it on the current mesh: the region
    * psi < 0 of the Q1 level set, cut out of every cell the surface crosses
-   * (doc/method.md, "One time step", step 6: the sharp liquid domain). A cut
+   * (doc/method.md, "The liquid": the sharp liquid domain). A cut
    * cell carries quadratures, on the reference cell, of its liquid part and of
    * the piece of free surface inside it, generated from the cell's own
    * level set by deal.II's NonMatching::QuadratureGenerator.

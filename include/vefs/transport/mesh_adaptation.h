@@ -73,7 +73,7 @@ namespace vefs
   constexpr types::material_id liquid_material_id = 1;
 
   /**
-   * Refinement levels tied to the free surface (doc/method.md, "One time step",
+   * Refinement levels tied to the free surface (doc/time_step_surface.md,
    * step 5): the finest level in a band around psi = 0, the bulk level inside
    * the liquid, the minimum level in the empty cavity.
    */

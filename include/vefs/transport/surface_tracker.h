@@ -18,8 +18,8 @@
 namespace vefs
 {
   /**
-   * The free surface from one step to the next (doc/method.md, "One time
-   * step", steps 2-6): where the band of finest cells is placed, the
+   * The free surface from one step to the next (doc/time_step_surface.md,
+   * steps 2-6): where the band of finest cells is placed, the
    * advection of every field along the characteristics, the level set
    * history between remaps, the redistancing, the volume correction toward
    * the expected liquid volume, and the mesh adapted to the new surface.

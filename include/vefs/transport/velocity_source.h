@@ -11,8 +11,8 @@
 namespace vefs
 {
   /**
-   * Where the velocity of a step comes from: the flow step (doc/method.md,
-   * "One time step", steps 7-9) or a velocity prescribed by the scene
+   * Where the velocity of a step comes from: the flow step
+   * (doc/time_step_flow.md, steps 7-9) or a velocity prescribed by the scene
    * (doc/method.md, "Transport-only mode"). The time loop asks it for the
    * length of the next step, for the velocity the characteristics trace
    * along, and for the new velocity on the new liquid domain.
