@@ -1,4 +1,9 @@
+#include <deal.II/base/utilities.h>
+
 #include <vefs/base/parameter_entries.h>
+
+#include <cmath>
+#include <sstream>
 
 namespace vefs
 {
@@ -12,5 +17,37 @@ namespace vefs
             entry,
             "needs " + dim_text + " comma-separated numbers (Dimension = " +
               dim_text + "), got " + std::to_string(point.size()));
+  }
+
+  void
+  add_number_or_automatic(dealii::ParameterHandler &prm,
+                          const std::string        &path,
+                          const std::string        &entry,
+                          double                   &value,
+                          bool                     &automatic,
+                          const double              minimum,
+                          const std::string        &documentation)
+  {
+    prm.declare_entry(entry,
+                      "automatic",
+                      dealii::Patterns::Anything(),
+                      documentation);
+    prm.add_action(
+      entry,
+      [&value, &automatic, path, entry, minimum](const std::string &text) {
+        automatic = text == "automatic";
+        if (automatic)
+          return;
+        std::istringstream stream(text);
+        double             number;
+        char               rest;
+        const bool         is_number = (stream >> number) && !(stream >> rest);
+        require(is_number && std::isfinite(number) && number >= minimum,
+                path + "/" + entry,
+                "must be 'automatic' or a number of at least " +
+                  dealii::Utilities::to_string(minimum) + ", got '" + text +
+                  "'");
+        value = number;
+      });
   }
 } // namespace vefs

@@ -146,9 +146,21 @@ namespace vefs
   }
 
   void
+  Parameters::resolve_automatic_entries()
+  {
+    // The entries whose best value depends on the material (the measured
+    // settings of the elastic scenes: doc/bouncing_ball.md).
+    const Regime regime = material.regime();
+    stress.resolve(regime);
+    if (time.automatic_max_strain)
+      time.max_strain_per_step = regime == Regime::elastic_solid ? 0.25 : 0;
+  }
+
+  void
   Parameters::check()
   {
     warnings.clear();
+    resolve_automatic_entries();
     time.check();
     cavity.check(dimension);
     material.check(dimension);

@@ -80,6 +80,15 @@ namespace vefs
   }
 
   void
+  StressParameters::resolve(const Regime regime)
+  {
+    if (stress_update == StressUpdate::automatic)
+      stress_update = regime == Regime::elastic_solid
+                        ? StressUpdate::exponential
+                        : StressUpdate::linear;
+  }
+
+  void
   StressParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Stress");
@@ -89,6 +98,7 @@ namespace vefs
         "Stress update",
         stress_update,
         std::vector<std::pair<std::string, StressUpdate>>{
+          {"automatic", StressUpdate::automatic},
           {"linear", StressUpdate::linear},
           {"exponential", StressUpdate::exponential}},
         "How the conformation tensor c (B for the elastic solid) is carried "
@@ -99,7 +109,8 @@ namespace vefs
         "c* exp(tau L)^T, the exact solution for a velocity gradient "
         "constant over the step, positive definite by construction and "
         "equal to the linear one to first order. The relaxation (alpha > 0) "
-        "follows in both cases.");
+        "follows in both cases. automatic: exponential for an elastic solid "
+        "(alpha = 0), linear for a liquid.");
       prm.add_parameter(
         "Stress theta",
         stress_theta,

@@ -205,4 +205,48 @@ main()
         out << "old and new place: " << error.what() << '\n';
       }
   }
+
+  {
+    // 'automatic' entries take the value of the material's regime; a
+    // number given stays.
+    const auto resolved = [](const std::string &material,
+                             const std::string &time) {
+      write("automatic.prm",
+            "subsection Material\n" + material + "end\nsubsection Time\n" +
+              time + "end\n");
+      vefs::Parameters parameters;
+      ParameterHandler prm;
+      parameters.declare(prm);
+      vefs::read_parameter_file(prm,
+                                "automatic.prm",
+                                vefs::Parameters::moved_entries);
+      parameters.check();
+      return std::string(parameters.stress.stress_update ==
+                             vefs::StressUpdate::exponential
+                           ? "exponential"
+                           : "linear") +
+             ", maximum strain per step " +
+             std::to_string(parameters.time.max_strain_per_step);
+    };
+    const std::string elastic = "  set Alpha = 0\n"
+                                "  set Polymer viscosity = 10\n"
+                                "  set Relaxation time = 0.005\n";
+    const std::string oldroyd = "  set Polymer viscosity = 10\n"
+                                "  set Relaxation time = 0.005\n";
+    out << "automatic, elastic solid: " << resolved(elastic, "") << '\n';
+    out << "automatic, Oldroyd-B liquid: " << resolved(oldroyd, "") << '\n';
+    out << "automatic, Newtonian liquid: "
+        << resolved("  set Density = 1000\n", "") << '\n';
+    out << "elastic solid, strain bound 0.1: "
+        << resolved(elastic, "  set Maximum strain per step = 0.1\n") << '\n';
+    try
+      {
+        resolved(elastic, "  set Maximum strain per step = -1\n");
+        out << "strain bound -1: NOT refused\n";
+      }
+    catch (const vefs::InputError &error)
+      {
+        out << "strain bound -1: " << error.what() << '\n';
+      }
+  }
 }

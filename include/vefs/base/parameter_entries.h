@@ -64,6 +64,21 @@ namespace vefs
           value = choice;
     });
   }
+
+  /**
+   * Declares the entry @p entry (of the subsection @p path, for messages)
+   * whose value is 'automatic' (its default: @p automatic becomes true) or
+   * a number of at least @p minimum, stored in @p value (@p automatic
+   * becomes false). Anything else throws InputError naming the entry.
+   */
+  void
+  add_number_or_automatic(dealii::ParameterHandler &prm,
+                          const std::string        &path,
+                          const std::string        &entry,
+                          double                   &value,
+                          bool                     &automatic,
+                          const double              minimum,
+                          const std::string        &documentation);
 } // namespace vefs
 
 #endif

@@ -18,10 +18,15 @@ namespace vefs
     void
     check() const;
 
-    double end_time            = 0.18;
-    double time_step           = 0.001;
-    double target_cfl          = 0;
-    double max_strain_per_step = 0;
+    double end_time   = 0.18;
+    double time_step  = 0.001;
+    double target_cfl = 0;
+    /**
+     * 'Maximum strain per step'; while @p automatic_max_strain (the entry
+     * is 'automatic') it is set by the material: Parameters::check().
+     */
+    double max_strain_per_step  = 0;
+    bool   automatic_max_strain = true;
     /**
      * Whether the strain bound shortens the next step ('Strain bound =
      * step'); otherwise only the exponential stress update scales the strain

@@ -43,6 +43,14 @@ namespace vefs
     void
     check();
 
+    /**
+     * The entries set to 'automatic' given their value for the material:
+     * 'Stress/Stress update' and 'Time/Maximum strain per step'. Called by
+     * check().
+     */
+    void
+    resolve_automatic_entries();
+
     /** What a run on @p n_ranks MPI ranks cannot do; throws InputError. */
     void
     check_for_ranks(const unsigned int n_ranks) const;

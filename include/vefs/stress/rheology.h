@@ -28,6 +28,8 @@ namespace vefs
    */
   enum class StressUpdate
   {
+    /** Resolved by the material's regime: StressParameters::resolve(). */
+    automatic,
     linear,
     exponential
   };
@@ -75,7 +77,15 @@ namespace vefs
     void
     declare(dealii::ParameterHandler &prm);
 
-    StressUpdate stress_update = StressUpdate::linear;
+    /**
+     * 'automatic' becomes exponential for an elastic solid (an impact
+     * breaks the linear update: doc/time_step_flow.md, step 9) and linear,
+     * the seed's, for a liquid.
+     */
+    void
+    resolve(const Regime regime);
+
+    StressUpdate stress_update = StressUpdate::automatic;
     /** Weight of the new velocity in the stress of the diffusion step. */
     double stress_theta = 1;
   };
@@ -119,6 +129,8 @@ namespace vefs
       , max_strain(max_strain)
       , theta(stress.stress_theta)
     {
+      Assert(update != StressUpdate::automatic,
+             dealii::ExcMessage("StressParameters::resolve() first."));
     }
 
     /** Oldroyd-B liquids and elastic solids carry a stress field. */
