@@ -2,6 +2,7 @@
 
 #include <vefs/base/parameter_entries.h>
 #include <vefs/io/postprocessing.h>
+#include <vefs/stress/mechanical_energy.h>
 #include <vefs/transport/free_surface.h>
 
 #include <array>
@@ -146,9 +147,11 @@ namespace vefs
               first_moment += values.JxW[q] * values.point[q];
               momentum += values.JxW[q] * u;
               kinetic +=
-                0.5 * material.density * u.norm_square() * values.JxW[q];
-              potential -=
-                material.density * gravity * values.point[q] * values.JxW[q];
+                kinetic_energy_density(material.density, u) * values.JxW[q];
+              potential += potential_energy_density(material.density,
+                                                    gravity,
+                                                    values.point[q]) *
+                           values.JxW[q];
             }
         }
     s.kinetic_energy    = Utilities::MPI::sum(kinetic, comm);

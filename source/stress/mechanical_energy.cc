@@ -35,9 +35,11 @@ namespace vefs
             {
               const Tensor<1, dim> u = values.value(vertex_u, q);
               energy.kinetic +=
-                0.5 * material.density * u.norm_square() * values.JxW[q];
-              energy.potential -=
-                material.density * gravity * values.point[q] * values.JxW[q];
+                kinetic_energy_density(material.density, u) * values.JxW[q];
+              energy.potential += potential_energy_density(material.density,
+                                                           gravity,
+                                                           values.point[q]) *
+                                  values.JxW[q];
               if (has_stress)
                 energy.elastic += rheology.elastic_energy_density(
                                     values.value(vertex_sigma, q)) *

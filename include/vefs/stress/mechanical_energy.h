@@ -29,6 +29,24 @@ namespace vefs
     }
   };
 
+  /** Kinetic energy per volume, rho |u|^2 / 2. */
+  template <int dim>
+  inline double
+  kinetic_energy_density(const double density, const Tensor<1, dim> &u)
+  {
+    return 0.5 * density * u.norm_square();
+  }
+
+  /** Potential energy per volume in the gravity @p g, -rho g.x. */
+  template <int dim>
+  inline double
+  potential_energy_density(const double          density,
+                           const Tensor<1, dim> &g,
+                           const Point<dim>     &x)
+  {
+    return -(density * g * x);
+  }
+
   /** The energies of @p fields on @p domain, summed over all ranks. */
   template <int dim>
   MechanicalEnergy
