@@ -84,6 +84,21 @@ def output_time_interval(output_dir):
         return 0.
 
 
+def parse_steps(text):
+    """The --steps option: comma separated step numbers, a:b:c for
+    range(a, b + 1, c); None if not given."""
+    if not text:
+        return None
+    steps = []
+    for item in text.split(","):
+        if ":" in item:
+            lo, hi, by = (int(v) for v in item.split(":"))
+            steps += range(lo, hi + 1, by)
+        else:
+            steps.append(int(item))
+    return steps
+
+
 def select_outputs(output_dir, steps, every):
     """[(requested step, step of the output used, its time, .pvtu path)].
 
@@ -294,15 +309,7 @@ def main(argv=None):
                    help="all outlines in one panel, coloured by time")
     p.add_argument("--out", default="shapes.png")
     a = p.parse_args(argv)
-    steps = None
-    if a.steps:
-        steps = []
-        for item in a.steps.split(","):
-            if ":" in item:
-                lo, hi, by = (int(v) for v in item.split(":"))
-                steps += range(lo, hi + 1, by)
-            else:
-                steps.append(int(item))
+    steps = parse_steps(a.steps)
     dim = dimension(a.output_dir)
     frames = select_outputs(a.output_dir, steps, a.every)
     if not frames:

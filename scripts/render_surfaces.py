@@ -3,7 +3,7 @@
 and 2 (the ball and the beam at steps 3, 6, ..., 54).
 
 Usage:
-  /usr/bin/python3 scripts/render_surfaces.py OUTPUT_DIR [--steps 3:54:3]
+  /usr/bin/python3 scripts/render_surfaces.py OUTPUT_DIR [--steps 3,6,9]
       [--every N] [--columns 6] [--view 20,-60] [--out surfaces.png]
   /usr/bin/python3 scripts/render_surfaces.py --self-test
 
@@ -31,7 +31,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from render_shapes import select_outputs  # noqa: E402
+from render_shapes import parse_steps, select_outputs  # noqa: E402
 from vefs_tools.isosurface import self_test, tetrahedra, zero_surface  # noqa: E402,E501
 from vefs_tools.statistics import read_statistics  # noqa: E402
 from vefs_tools.vtu import cell_rows, read_pvtu  # noqa: E402
@@ -125,15 +125,7 @@ def main(argv=None):
         raise SystemExit(0 if self_test() else 1)
     if a.output_dir is None:
         p.error("OUTPUT_DIR is needed (or --self-test)")
-    steps = None
-    if a.steps:
-        steps = []
-        for item in a.steps.split(","):
-            if ":" in item:
-                lo, hi, by = (int(v) for v in item.split(":"))
-                steps += range(lo, hi + 1, by)
-            else:
-                steps.append(int(item))
+    steps = parse_steps(a.steps)
     frames = select_outputs(a.output_dir, steps, a.every)
     if not frames:
         raise SystemExit("no output selected")
