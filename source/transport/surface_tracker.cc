@@ -127,7 +127,14 @@ namespace vefs
                              levels,
                              1,
                              parameters.level_set_interpolation))
-          ++statistics.mesh_changes;
+          {
+            ++statistics.mesh_changes;
+            // With a cubic level set the new nodes of refined cells take
+            // cubic, not Q1, values: the surface moves. Restore the volume
+            // on the new mesh (doc/time_step_surface.md, step 4).
+            if (parameters.volume_correction)
+              correct_volume(fields, volume_expected);
+          }
         level_set_history.remap(fields, level_set_gradient);
       }
     return LiquidDomain<dim>(fields);
