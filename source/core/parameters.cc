@@ -152,6 +152,7 @@ namespace vefs
     // settings of the elastic scenes: doc/bouncing_ball.md).
     const Regime regime = material.regime();
     stress.resolve(regime);
+    flow.resolve(regime);
     if (time.automatic_max_strain)
       time.max_strain_per_step = regime == Regime::elastic_solid ? 0.25 : 0;
   }

@@ -223,7 +223,7 @@ namespace vefs
                         domain,
                         rheology,
                         tau,
-                        parameters.flow.extend_outside_stress);
+                        parameters.flow.extends_outside_stress());
         statistics.max_velocity_gradient = report.max_velocity_gradient;
         statistics.strain_limited_points = report.strain_limited_points;
       }
@@ -240,7 +240,7 @@ namespace vefs
     // velocity and the updated stress, or take the extension ('Outside
     // velocity/stress of cut cells').
     const bool extend_stress =
-      fields.has_stress() && parameters.flow.extend_outside_stress;
+      fields.has_stress() && parameters.flow.extends_outside_stress();
     if (parameters.flow.extend_outside_velocity == extend_stress)
       {
         if (extend_stress)

@@ -116,7 +116,7 @@ main()
              parameters.cavity.wall_type[2] == vefs::WallType::contact &&
              parameters.stress.stress_update ==
                vefs::StressUpdate::exponential &&
-             parameters.flow.extend_outside_stress &&
+             parameters.flow.outside_stress == vefs::OutsideStress::extension &&
              parameters.postprocess.probe_point ==
                std::vector<double>({0.1, 0.05}));
 
@@ -172,7 +172,8 @@ main()
              t.cubic_stress_interpolation && t.remap_distance == 10 &&
              t.redistancing_interval == 0 && !t.volume_correction &&
              f.flow_on_parents && f.extension_layers == 7 &&
-             f.extend_outside_velocity && f.extend_outside_stress &&
+             f.extend_outside_velocity &&
+             f.outside_stress == vefs::OutsideStress::extension &&
              parameters.stress.stress_update ==
                vefs::StressUpdate::exponential &&
              parameters.stress.stress_theta == 0.5 &&
@@ -226,7 +227,10 @@ main()
                            ? "exponential"
                            : "linear") +
              ", maximum strain per step " +
-             std::to_string(parameters.time.max_strain_per_step);
+             std::to_string(parameters.time.max_strain_per_step) +
+             ", outside stress " +
+             (parameters.flow.extends_outside_stress() ? "extension"
+                                                       : "updated");
     };
     const std::string elastic = "  set Alpha = 0\n"
                                 "  set Polymer viscosity = 10\n"

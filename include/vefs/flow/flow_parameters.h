@@ -8,6 +8,15 @@
 
 namespace vefs
 {
+  /** The stress at the vertices of cut cells outside the liquid. */
+  enum class OutsideStress
+  {
+    /** Resolved by the material's regime: FlowParameters::resolve(). */
+    automatic,
+    updated,
+    extension
+  };
+
   /**
    * Where the flow is solved and what the characteristics see beyond it:
    * subsection "Flow".
@@ -17,6 +26,26 @@ namespace vefs
     void
     declare(dealii::ParameterHandler &prm);
 
+    /**
+     * 'automatic' outside stress becomes extension for an elastic solid
+     * (the updated one feeds energy into a body at rest:
+     * doc/bouncing_ball.md) and updated, the seed's, for a liquid.
+     */
+    void
+    resolve(const Regime regime);
+
+    /**
+     * Whether the vertices of cut cells outside the liquid take the extended
+     * stress ('Outside stress of cut cells').
+     */
+    bool
+    extends_outside_stress() const
+    {
+      Assert(outside_stress != OutsideStress::automatic,
+             dealii::ExcMessage("FlowParameters::resolve() first."));
+      return outside_stress == OutsideStress::extension;
+    }
+
     /** Whether the flow's unknowns on the finest cells are their parents'
      * ('Flow cells = parents'), see FlowElements. */
     bool         flow_on_parents  = false;
@@ -25,10 +54,8 @@ namespace vefs
      * Whether the vertices of cut cells outside the liquid take the extended
      * velocity instead of the flow step's ('Outside velocity of cut cells').
      */
-    bool extend_outside_velocity = false;
-    /** Whether they take the extended stress ('Outside stress of cut cells').
-     */
-    bool extend_outside_stress = false;
+    bool          extend_outside_velocity = false;
+    OutsideStress outside_stress          = OutsideStress::automatic;
   };
 
   /** The linear solves and the stabilizations: subsection "Solver". */
