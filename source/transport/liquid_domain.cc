@@ -97,8 +97,8 @@ namespace vefs
        * rule that counts whole sub-boxes, which makes the volume jump as the
        * level set passes a saddle value and the volume correction miss for
        * a step (doc/time_step_surface.md, step 4). Twelve remove that in 2D
-       * at no measurable cost; in 3D they took 1.7 times the run time, so
-       * deal.II's four stay.
+       * at no measurable cost; in 3D they took 1.9 times the run time and
+       * fewer only shrink the miss, so deal.II's four stay.
        */
       static constexpr unsigned int max_box_splits = dim == 2 ? 12 : 4;
 
