@@ -131,8 +131,11 @@ namespace vefs
             ++statistics.mesh_changes;
             // With a cubic level set the new nodes of refined cells take
             // cubic, not Q1, values: the surface moves. Restore the volume
-            // on the new mesh (doc/time_step_surface.md, step 4).
-            if (parameters.volume_correction)
+            // on the new mesh (doc/time_step_surface.md, step 4). The Q1
+            // level set keeps its surface: no second volume integral.
+            if (parameters.volume_correction &&
+                parameters.level_set_interpolation !=
+                  LevelSetInterpolation::linear)
               correct_volume(fields, volume_expected);
           }
         level_set_history.remap(fields, level_set_gradient);
