@@ -49,7 +49,7 @@ namespace vefs
         "solution there, and in an elastic body held by that wall it feeds "
         "a growing local mode: the 3D beam of prm/oscillating_beam.prm "
         "stalls at t = 0.17 s with solution and runs to the end with "
-        "extension (doc/bouncing_ball.md). The stress at these vertices: "
+        "extension (doc/oscillating_beam.md). The stress at these vertices: "
         "'Outside stress of cut cells'.");
       add_selection(
         prm,
@@ -70,7 +70,8 @@ namespace vefs
         "after its second contact gained 31.5 J/m in 0.15 s with updated and "
         "lost 0.9 J/m with extension; a stiff beam held by a wall, at rest, "
         "gained 5.8 % of its energy in 10 s with updated, 0.33 % with "
-        "extension (doc/bouncing_ball.md). automatic: extension for an "
+        "extension (doc/bouncing_ball.md, doc/oscillating_beam.md). "
+        "automatic: extension for an "
         "elastic solid (alpha = 0), updated for a liquid.");
     }
     prm.leave_subsection();

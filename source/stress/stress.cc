@@ -91,7 +91,7 @@ namespace vefs
      * ghost penalty and a sliver of liquid, and their stress enters the
      * liquid only through the Q1 interpolation. Unbounded, it grows by the
      * strain bound in every step while the step shrinks (the beam held by
-     * a no-slip wall, doc/bouncing_ball.md). @p updated is nonzero at the
+     * a no-slip wall, doc/oscillating_beam.md). @p updated is nonzero at the
      * nodes the update has just set.
      */
     template <int dim>
@@ -208,7 +208,7 @@ namespace vefs
               // it stretches there enters the liquid through the Q1
               // interpolation, without the flow step resisting that
               // stretching, and grows by the strain bound in every step
-              // (the beam held by a no-slip wall, doc/bouncing_ball.md).
+              // (the beam held by a no-slip wall, doc/oscillating_beam.md).
               const BoxCellValues<dim> &values = liquid_values.reinit(cell);
               for (const unsigned int v : cell->vertex_indices())
                 for (unsigned int d = 0; d < dim; ++d)

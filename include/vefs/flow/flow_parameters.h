@@ -29,7 +29,7 @@ namespace vefs
     /**
      * 'automatic' outside stress becomes extension for an elastic solid
      * (the updated one feeds energy into a body at rest:
-     * doc/bouncing_ball.md) and updated, the seed's, for a liquid.
+     * doc/oscillating_beam.md) and updated, the seed's, for a liquid.
      */
     void
     resolve(const Regime regime);
