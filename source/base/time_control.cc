@@ -73,6 +73,24 @@ namespace vefs
         "velocity would, which the energies in the statistics show as "
         "dissipation. Needs 'Stress/Stress update = exponential' and a "
         "positive 'Maximum strain per step'.");
+      add_selection(
+        prm,
+        "Scheme",
+        second_order,
+        std::vector<std::pair<std::string, bool>>{{"first order", false},
+                                                  {"second order", true}},
+        "The splitting of a flow step. first order: the seed's; the "
+        "characteristics trace along the last step's velocity, the momentum "
+        "equation is implicit in the forces (backward Euler), the stress law "
+        "weighted by 'Stress/Stress theta'. second order: the "
+        "characteristics trace along the mid-step velocity u + tau/2 a (a "
+        "the acceleration of the last step, carried as a field), the "
+        "momentum equation takes the mean of the old and the new forces "
+        "(the trapezoidal rule, velocity Verlet for a body in free fall or a "
+        "surface wave) and the stress law the midpoint velocity. A freely "
+        "falling body then follows the exact parabola at any step. See "
+        "doc/time_step_flow.md. Not used with a prescribed velocity, which "
+        "is always traced at mid-step.");
       prm.add_parameter("Maximum steps",
                         maximum_steps,
                         "Largest number of time steps: a scene whose End "

@@ -213,6 +213,14 @@ namespace vefs
             "refinement/Maximum level' - 1 (or equal to it, and at least 1): "
             "the flow's cells then all lie on one level");
 
+    require(!time.second_order || stress.stress_theta == 1,
+            "Stress/Stress theta",
+            "weighs the stress law of 'Time/Scheme = first order' only; the "
+            "second-order scheme uses the midpoint velocity: leave it 1");
+    require(!time.second_order || !transport.velocity_is_prescribed(),
+            "Time/Scheme",
+            "a prescribed velocity is always traced at mid-step and solves "
+            "no flow: leave it 'first order'");
     require(!postprocess.energy_budget || !transport.velocity_is_prescribed(),
             "Postprocess/Energy budget",
             "a prescribed velocity solves no flow and has no energy budget: "

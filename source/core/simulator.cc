@@ -56,7 +56,8 @@ namespace vefs
     , checkpoint(checkpoint)
     , rheology(parameters.material,
                parameters.stress,
-               parameters.time.max_strain_per_step)
+               parameters.time.max_strain_per_step,
+               parameters.time.second_order)
     , comm(MPI_COMM_WORLD)
     , output(parameters.output_directory, comm, !checkpoint.empty())
     , pcout(std::cout,
@@ -89,6 +90,7 @@ namespace vefs
            levels.finest_cell_size)
     , fields(triangulation,
              rheology.has_stress(),
+             parameters.time.second_order,
              parameters.cavity.periodic_directions())
     , flow(parameters.flow_step(), triangulation)
     , statistics_file(output.path(), comm, !checkpoint.empty())
@@ -176,7 +178,7 @@ namespace vefs
         resume();
     }
     LiquidDomain<dim> domain(fields);
-    velocity->start(fields, domain, time.time());
+    velocity->start(fields, domain, time.time(), checkpoint.empty());
     // A resumed run has the row of its first step already.
     if (checkpoint.empty())
       report(domain);

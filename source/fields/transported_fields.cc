@@ -11,8 +11,14 @@ namespace vefs
   TransportedFields<dim>::TransportedFields(
     const parallel::distributed::Triangulation<dim> &triangulation,
     const bool                                       with_stress,
+    const bool                                       with_acceleration,
     const std::vector<unsigned int>                 &periodic_directions)
-    : n_components(with_stress ? max_components : dim + 1)
+    : with_stress(with_stress)
+    , with_acceleration(with_acceleration)
+    , n_components(dim + 1 + (with_stress ? n_stress_components : 0) +
+                   (with_acceleration ? dim : 0))
+    , first_acceleration_component(dim + 1 +
+                                   (with_stress ? n_stress_components : 0))
     , fe(FE_Q<dim>(1), n_components)
     , dof_handler(triangulation)
     , periodic_directions(periodic_directions)
@@ -65,6 +71,8 @@ namespace vefs
             seen[local] = true;
             Node node;
             node.point = cell->vertex(v);
+            // Slots of absent components stay invalid, not undefined.
+            node.dofs.fill(numbers::invalid_dof_index);
             for (unsigned int c = 0; c < n_components; ++c)
               node.dofs[c] = cell->vertex_dof_index(v, c);
             owned_nodes.push_back(node);
@@ -93,6 +101,9 @@ namespace vefs
           for (unsigned int i = 0; i < n_stress_components; ++i)
             fields(node.dofs[first_stress_component + i]) =
               stress ? stress->value(node.point, i) : 0.;
+        // The acceleration of a new run comes from its first flow solve.
+        if (has_acceleration())
+          set_acceleration(node, Tensor<1, dim>());
       }
     finalize();
   }

@@ -82,11 +82,14 @@ namespace vefs
 
   template <int dim>
   void
-  FlowVelocity<dim>::start(const TransportedFields<dim> &fields,
-                           const LiquidDomain<dim>      &domain,
-                           const double                  time)
+  FlowVelocity<dim>::start(TransportedFields<dim>  &fields,
+                           const LiquidDomain<dim> &domain,
+                           const double             time,
+                           const bool               new_run)
   {
     flow.setup(domain, time);
+    if (new_run && fields.has_acceleration())
+      find_initial_acceleration(fields);
     if (parameters.energy_budget)
       last_energy = energy(fields, domain);
   }
@@ -112,10 +115,101 @@ namespace vefs
 
   template <int dim>
   void
-  FlowVelocity<dim>::set_advection_velocity(TransportedFields<dim> &,
-                                            const TimeControl &) const
+  FlowVelocity<dim>::set_advection_velocity(TransportedFields<dim> &fields,
+                                            const TimeControl      &time)
   {
-    // The fields hold the flow's last velocity, extended beyond the liquid.
+    // The fields hold the flow's last velocity, extended beyond the liquid;
+    // the second-order scheme traces along the mid-step velocity u + tau/2 a
+    // (once per step: a mesh change before the advection carries it along).
+    if (!fields.has_acceleration() || trace_velocity_in_fields)
+      return;
+    add_acceleration_to_velocity(fields, time.tau() / 2);
+    trace_velocity_in_fields = true;
+  }
+
+  template <int dim>
+  void
+  FlowVelocity<dim>::finish_advection(TransportedFields<dim> &fields,
+                                      const TimeControl      &time)
+  {
+    // (u + tau/2 a)(X) - tau/2 a(X) = u(X): exact for the Q1 interpolation
+    // of both, to the limiter's clipping for a limited cubic velocity.
+    if (!trace_velocity_in_fields)
+      return;
+    add_acceleration_to_velocity(fields, -time.tau() / 2);
+    trace_velocity_in_fields = false;
+  }
+
+  template <int dim>
+  void
+  FlowVelocity<dim>::add_acceleration_to_velocity(
+    TransportedFields<dim> &fields,
+    const double            factor) const
+  {
+    for (const auto &node : fields.nodes())
+      fields.set_velocity(node,
+                          fields.velocity(node) +
+                            factor * fields.acceleration(node));
+    fields.finalize();
+  }
+
+  template <int dim>
+  void
+  FlowVelocity<dim>::set_acceleration(
+    TransportedFields<dim>                            &fields,
+    const typename TransportedFields<dim>::VectorType &advected,
+    const typename TransportedFields<dim>::VectorType &known,
+    const double                                       tau) const
+  {
+    for (const auto &node : fields.nodes())
+      if (known(node.dofs[0]) != 0)
+        {
+          Tensor<1, dim> advected_acceleration;
+          for (unsigned int d = 0; d < dim; ++d)
+            advected_acceleration[d] =
+              advected(node.dofs[fields.first_acceleration_component + d]);
+          fields.set_acceleration(
+            node,
+            (2 / tau) *
+                (fields.velocity(node) -
+                 TransportedFields<dim>::velocity_slots(advected, node)) -
+              advected_acceleration);
+        }
+    fields.finalize();
+  }
+
+  template <int dim>
+  void
+  FlowVelocity<dim>::find_initial_acceleration(TransportedFields<dim> &fields)
+  {
+    TimerOutput::Scope scope(timer, "initial acceleration");
+    // Over one 'Time step': the pressure stabilisation weakens as the step
+    // shrinks, and over a thousandth of it the pressure's oscillation gave
+    // a body in free fall accelerations from -47 to 66 m/s^2 instead of g.
+    const double tau = parameters.time_step;
+    flow.assemble(fields, tau);
+    flow.build_preconditioner();
+    solve_with_contact(fields, tau);
+    typename TransportedFields<dim>::VectorType initial, known;
+    fields.copy_to(initial);
+    fields.initialize_vector(known);
+    flow.copy_velocity_to(fields, known);
+    // The initial acceleration a* is zero: a = (2 / tau) (u - u0).
+    set_acceleration(fields, initial, known, tau);
+    for (const auto &node : fields.nodes())
+      fields.set_velocity(node,
+                          TransportedFields<dim>::velocity_slots(initial,
+                                                                 node));
+    fields.finalize();
+    if (parameters.flow.extend_outside_velocity)
+      unflag_nodes_outside_liquid(fields, known);
+    std::vector<unsigned int> acceleration;
+    for (unsigned int d = 0; d < dim; ++d)
+      acceleration.push_back(fields.first_acceleration_component + d);
+    extend_flow_fields(fields,
+                       known,
+                       parameters.flow.extension_layers,
+                       acceleration);
   }
 
   template <int dim>
@@ -204,13 +298,16 @@ namespace vefs
     TimerOutput::Scope scope(timer, "velocity extension");
     typename TransportedFields<dim>::VectorType known;
     fields.initialize_vector(known);
-    // With 'Stress theta' < 1 the stress law sees theta u + (1 - theta) u*:
-    // keep u* before the new velocity replaces it.
+    // With 'Stress theta' < 1 the stress law sees theta u + (1 - theta) u*,
+    // and the second-order scheme's acceleration needs u* and a*: keep them
+    // before the new velocity replaces them.
     const double theta = rheology.implicit_weight();
     typename TransportedFields<dim>::VectorType blended_velocity;
-    if (rheology.has_stress() && theta < 1)
+    if ((rheology.has_stress() && theta < 1) || fields.has_acceleration())
       fields.copy_to(blended_velocity);
     flow.copy_velocity_to(fields, known);
+    if (fields.has_acceleration())
+      set_acceleration(fields, blended_velocity, known, tau);
     if (rheology.has_stress())
       {
         TimerOutput::Scope scope(timer, "4 stress update");
@@ -254,7 +351,7 @@ namespace vefs
         extend_flow_fields(fields,
                            extend_stress ? known_outside_too : known,
                            layers,
-                           velocity_components<dim>());
+                           velocity_and_acceleration_components(fields));
         if (fields.has_stress())
           extend_flow_fields(fields,
                              extend_stress ? known : known_outside_too,

@@ -15,7 +15,7 @@ namespace vefs
                                   const FlowElements<dim>  &elements,
                                   const double              tau)
     : parameters(parameters)
-    , tau(tau)
+    , mass_tau(parameters.second_order ? tau / 2 : tau)
     , mu(rheology.effective_viscosity(tau))
     , flow_fe(flow_fe)
     , elements(elements)
@@ -276,11 +276,11 @@ namespace vefs
   {
     const double rho   = parameters.material.density;
     const double gamma = parameters.solver.ghost_penalty * share;
-    const double tau_K =
-      parameters.solver.pressure_stabilization / (rho / tau + 4 * mu / (h * h));
-    return {gamma * (mu + rho * h * h / tau) * h,
+    const double tau_K = parameters.solver.pressure_stabilization /
+                         (rho / mass_tau + 4 * mu / (h * h));
+    return {gamma * (mu + rho * h * h / mass_tau) * h,
             gamma * tau_K * h,
-            gamma * (tau / rho + tau_K) * h};
+            gamma * (mass_tau / rho + tau_K) * h};
   }
 
   template <int dim>

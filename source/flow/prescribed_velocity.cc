@@ -34,9 +34,10 @@ namespace vefs
 
   template <int dim>
   void
-  PrescribedVelocity<dim>::start(const TransportedFields<dim> &,
+  PrescribedVelocity<dim>::start(TransportedFields<dim> &,
                                  const LiquidDomain<dim> &,
-                                 const double)
+                                 const double,
+                                 const bool)
   {
   }
 
@@ -81,7 +82,7 @@ namespace vefs
   void
   PrescribedVelocity<dim>::set_advection_velocity(
     TransportedFields<dim> &fields,
-    const TimeControl      &time) const
+    const TimeControl      &time)
   {
     set_velocity(fields, time.time() + time.tau() / 2);
   }

@@ -17,6 +17,7 @@ namespace vefs
     , elements(elements)
     , flow_fe(flow_fe)
     , tau(tau)
+    , mass_tau(parameters.second_order ? tau / 2 : tau)
     , mu(rheology.effective_viscosity(tau))
     , sigma_star_factor(rheology.explicit_stress_factor(tau))
     , geometric_factor(rheology.geometric_factor(tau))
@@ -119,10 +120,10 @@ namespace vefs
     const BoxCellValues<dim> &values = liquid_values.reinit(cell);
     evaluate_advected_fields(values, fields.cell_of(cell));
 
-    const double h = elements.size(cell);
-    const double tau_K =
-      parameters.solver.pressure_stabilization / (rho / tau + 4 * mu / (h * h));
-    schur_weight = tau / rho + tau_K;
+    const double h     = elements.size(cell);
+    const double tau_K = parameters.solver.pressure_stabilization /
+                         (rho / mass_tau + 4 * mu / (h * h));
+    schur_weight = mass_tau / rho + tau_K;
 
     matrix        = 0;
     schur         = 0;
@@ -132,7 +133,7 @@ namespace vefs
       add_surface_terms(cell, h);
 
     const unsigned int n_vertices  = BoxCellValues<dim>::n_vertices;
-    const double       mass_factor = rho / tau;
+    const double       mass_factor = rho / mass_tau;
     for (unsigned int q = 0; q < values.size(); ++q)
       {
         // Every dof is the Q1 function N of its vertex in one component, so
@@ -277,14 +278,24 @@ namespace vefs
       grad_u_star.assign(n_q, Tensor<2, dim>());
     for (const unsigned int v : transport_cell->vertex_indices())
       {
-        const Tensor<1, dim>          u = fields.velocity_at(transport_cell, v);
+        Tensor<1, dim> u = fields.velocity_at(transport_cell, v);
+        // The second-order scheme's old forces, rho a*, join the mass term:
+        // rho / mass_tau (u* + mass_tau a*).
+        Tensor<1, dim> u_with_old_forces = u;
+        if (fields.has_acceleration())
+          for (unsigned int d = 0; d < dim; ++d)
+            u_with_old_forces[d] +=
+              mass_tau *
+              fields.value_at(transport_cell,
+                              v,
+                              fields.first_acceleration_component + d);
         const SymmetricTensor<2, dim> sigma =
           with_stress ? fields.stress_at(transport_cell, v)
                       : SymmetricTensor<2, dim>();
         for (unsigned int q = 0; q < n_q; ++q)
           {
             const double phi = values.shape[q][v];
-            u_star[q] += phi * u;
+            u_star[q] += phi * u_with_old_forces;
             if (with_explicit_strain)
               grad_u_star[q] += outer_product(u, values.gradient[q][v]);
             if (with_stress)

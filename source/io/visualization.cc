@@ -113,6 +113,13 @@ namespace vefs
           field_interpretation.push_back(
             DataComponentInterpretation::component_is_scalar);
         }
+    if (fields.has_acceleration())
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          names.push_back("acceleration");
+          field_interpretation.push_back(
+            DataComponentInterpretation::component_is_part_of_vector);
+        }
     data_out.add_data_vector(fields.dof_handler,
                              fields.vector(),
                              names,

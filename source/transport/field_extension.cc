@@ -215,10 +215,22 @@ namespace vefs
   stress_components(const TransportedFields<dim> &fields)
   {
     std::vector<unsigned int> components;
-    for (unsigned int c = TransportedFields<dim>::first_stress_component;
-         c < fields.n_components;
-         ++c)
-      components.push_back(c);
+    if (fields.has_stress())
+      for (unsigned int i = 0; i < TransportedFields<dim>::n_stress_components;
+           ++i)
+        components.push_back(TransportedFields<dim>::first_stress_component +
+                             i);
+    return components;
+  }
+
+  template <int dim>
+  std::vector<unsigned int>
+  velocity_and_acceleration_components(const TransportedFields<dim> &fields)
+  {
+    std::vector<unsigned int> components = velocity_components<dim>();
+    if (fields.has_acceleration())
+      for (unsigned int d = 0; d < dim; ++d)
+        components.push_back(fields.first_acceleration_component + d);
     return components;
   }
 
@@ -256,6 +268,10 @@ namespace vefs
   stress_components<2>(const TransportedFields<2> &);
   template std::vector<unsigned int>
   stress_components<3>(const TransportedFields<3> &);
+  template std::vector<unsigned int>
+  velocity_and_acceleration_components<2>(const TransportedFields<2> &);
+  template std::vector<unsigned int>
+  velocity_and_acceleration_components<3>(const TransportedFields<3> &);
   template void
   unflag_nodes_outside_liquid<2>(const TransportedFields<2> &,
                                  TransportedFields<2>::VectorType &);

@@ -37,10 +37,10 @@ namespace vefs
 
   template <int dim>
   void
-  SurfaceTracker<dim>::advect(TransportedFields<dim>    &fields,
-                              const VelocitySource<dim> &velocity,
-                              const TimeControl         &time,
-                              StepStatistics<dim>       &statistics)
+  SurfaceTracker<dim>::advect(TransportedFields<dim> &fields,
+                              VelocitySource<dim>    &velocity,
+                              const TimeControl      &time,
+                              StepStatistics<dim>    &statistics)
   {
     const double tau        = time.tau();
     statistics.mesh_changes = 0;
@@ -79,6 +79,7 @@ namespace vefs
                                  locator,
                                  foot_interpolation,
                                  &coarsened_detail);
+    velocity.finish_advection(fields, time);
     coarsened_detail.clear();
     remap = true;
     if (level_set_history.enabled())

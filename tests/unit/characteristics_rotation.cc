@@ -135,7 +135,7 @@ namespace
                                             subdivisions,
                                             walls);
 
-    vefs::TransportedFields<dim> fields(triangulation, false, {});
+    vefs::TransportedFields<dim> fields(triangulation, false, false, {});
     fields.setup_dofs();
     const Rotation<dim> velocity(A, center);
 

@@ -92,7 +92,7 @@ namespace
             cell->set_refine_flag();
         triangulation->execute_coarsening_and_refinement();
       }
-    vefs::TransportedFields<dim> fields(*triangulation, true, {});
+    vefs::TransportedFields<dim> fields(*triangulation, true, false, {});
     fields.setup_dofs();
     const unsigned int n_stress =
       vefs::TransportedFields<dim>::n_stress_components;
@@ -139,7 +139,7 @@ namespace
     out << name << "found: " << found << '\n';
 
     auto                         fresh_mesh = make_coarse_mesh<dim>();
-    vefs::TransportedFields<dim> fresh(*fresh_mesh, true, {});
+    vefs::TransportedFields<dim> fresh(*fresh_mesh, true, false, {});
     vefs::LevelSetGradient<dim>  fresh_gradient;
     vefs::LevelSetHistory<dim>   fresh_history(1.5);
     const vefs::RunState<dim>    read = vefs::read_checkpoint(found,
@@ -210,7 +210,7 @@ namespace
     try
       {
         auto                         mesh = make_coarse_mesh<dim>();
-        vefs::TransportedFields<dim> damaged(*mesh, true, {});
+        vefs::TransportedFields<dim> damaged(*mesh, true, false, {});
         vefs::LevelSetGradient<dim>  damaged_gradient;
         vefs::LevelSetHistory<dim>   damaged_history(1.5);
         vefs::read_checkpoint(found,

@@ -98,7 +98,7 @@ namespace
     const MPI_Comm                            comm = MPI_COMM_WORLD;
     parallel::distributed::Triangulation<dim> triangulation(comm);
     make_mesh(triangulation);
-    vefs::TransportedFields<dim> fields(triangulation, true, {0});
+    vefs::TransportedFields<dim> fields(triangulation, true, false, {0});
     fields.setup_dofs();
 
     using VectorType = typename vefs::TransportedFields<dim>::VectorType;

@@ -73,7 +73,7 @@ namespace
     triangulation.refine_global(4);
 
     // Blocks |x -+ 0.5| < 0.27, y < 0.27 (edges inside cells).
-    vefs::TransportedFields<2> fields(triangulation, false, {});
+    vefs::TransportedFields<2> fields(triangulation, false, false, {});
     fields.setup_dofs();
     fields.interpolate(
       ScalarFunctionFromFunctionObject<2>([](const Point<2> &p) {

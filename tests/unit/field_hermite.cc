@@ -103,7 +103,7 @@ namespace
     parallel::distributed::Triangulation<dim> triangulation(comm);
     GridGenerator::hyper_cube(triangulation, -0.5, 1.5);
     triangulation.refine_global(dim == 2 ? 4 : 3);
-    vefs::TransportedFields<dim> fields(triangulation, false, {});
+    vefs::TransportedFields<dim> fields(triangulation, false, false, {});
     fields.setup_dofs();
     vefs::LevelSetGradient<dim> level_set_gradient;
     level_set_gradient.reinit(fields);

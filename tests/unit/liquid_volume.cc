@@ -94,7 +94,7 @@ namespace
     parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
     make_cavity(triangulation);
     triangulation.refine_global(2);
-    vefs::TransportedFields<dim> fields(triangulation, false, {});
+    vefs::TransportedFields<dim> fields(triangulation, false, false, {});
     const ScalarFunctionFromFunctionObject<dim> plane(
       [&](const Point<dim> &p) { return normal * p - offset; });
     const Functions::ZeroFunction<dim> velocity(dim);
@@ -186,7 +186,7 @@ namespace
         parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
         make_cavity(triangulation);
         triangulation.refine_global(level);
-        vefs::TransportedFields<dim> fields(triangulation, false, {});
+        vefs::TransportedFields<dim> fields(triangulation, false, false, {});
         fields.setup_dofs();
         fields.interpolate(ScalarFunctionFromFunctionObject<dim>(
                              [&](const Point<dim> &p) {

@@ -71,7 +71,7 @@ namespace
       for (unsigned int j = i; j < dim; ++j)
         sigma[i][j] = i == j ? 300. * (i + 1) : -150.;
 
-    vefs::TransportedFields<dim> fields(triangulation, true, {});
+    vefs::TransportedFields<dim> fields(triangulation, true, false, {});
     fields.setup_dofs();
     const ScalarFunctionFromFunctionObject<dim> level_set(
       [&](const Point<dim> &p) { return p[dim - 1] - height; });

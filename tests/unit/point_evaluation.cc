@@ -59,7 +59,7 @@ namespace
                                             subdivisions,
                                             walls);
 
-    vefs::TransportedFields<dim> fields(triangulation, false, {});
+    vefs::TransportedFields<dim> fields(triangulation, false, false, {});
     fields.setup_dofs();
     fields.interpolate(unit_test::Smooth<dim>(1, 0.3),
                        unit_test::Smooth<dim>(dim, -0.2));

@@ -171,7 +171,7 @@ namespace
         cell->set_refine_flag();
     triangulation.execute_coarsening_and_refinement();
 
-    vefs::TransportedFields<2> fields(triangulation, true, {});
+    vefs::TransportedFields<2> fields(triangulation, true, false, {});
     fields.setup_dofs();
     SymmetricTensor<2, 2> advected;
     advected[0][0] = 0.7;

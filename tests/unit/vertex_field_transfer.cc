@@ -132,7 +132,7 @@ namespace
         cell->set_refine_flag();
     triangulation.execute_coarsening_and_refinement();
 
-    vefs::TransportedFields<dim> fields(triangulation, true, {});
+    vefs::TransportedFields<dim> fields(triangulation, true, false, {});
     fields.setup_dofs();
     const unsigned int n_stress =
       vefs::TransportedFields<dim>::n_stress_components;

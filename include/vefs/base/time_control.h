@@ -34,6 +34,12 @@ namespace vefs
      */
     bool         strain_bound_shortens_step = true;
     unsigned int maximum_steps              = 100000;
+    /**
+     * 'Scheme = second order': the characteristics trace along the mid-step
+     * velocity and the momentum equation takes the mean of the old and new
+     * forces (doc/time_step_flow.md, "The second-order scheme").
+     */
+    bool second_order = false;
   };
 
   /** When the visualization is written, and what the screen shows:

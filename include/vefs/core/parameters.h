@@ -66,7 +66,9 @@ namespace vefs
               solver,
               mesh.max_level,
               time.max_strain_per_step,
-              postprocess.energy_budget};
+              postprocess.energy_budget,
+              time.second_order,
+              time.time_step};
     }
 
     /** Entries that have moved to another subsection; their old places are

@@ -25,9 +25,12 @@ namespace vefs
    * the whole cavity: the velocity (extended beyond the liquid), the level
    * set psi whose negative part is the liquid, phi = H(-psi), and, in the
    * viscoelastic and elastic regimes only, the extra stress sigma (extended
-   * beyond the liquid like the velocity).
+   * beyond the liquid like the velocity), and with the second-order time
+   * scheme only, the acceleration a of the last flow step (extended like
+   * the velocity; doc/time_step_flow.md, "The second-order scheme").
    * Components: u_0 .. u_{dim-1}, psi, then the independent components of
-   * sigma in the order of SymmetricTensor<2, dim>::unrolled_index().
+   * sigma in the order of SymmetricTensor<2, dim>::unrolled_index(), then
+   * a_0 .. a_{dim-1}.
    */
   template <int dim>
   class TransportedFields
@@ -37,7 +40,7 @@ namespace vefs
     static constexpr unsigned int first_stress_component = dim + 1;
     static constexpr unsigned int n_stress_components    = dim * (dim + 1) / 2;
     static constexpr unsigned int max_components =
-      dim + 1 + n_stress_components;
+      dim + 1 + n_stress_components + dim;
     using VectorType = LinearAlgebra::distributed::Vector<double>;
 
     /** A locally owned mesh vertex that carries its own degrees of freedom. */
@@ -54,12 +57,19 @@ namespace vefs
     TransportedFields(
       const parallel::distributed::Triangulation<dim> &triangulation,
       const bool                                       with_stress,
+      const bool                                       with_acceleration,
       const std::vector<unsigned int>                 &periodic_directions);
 
     bool
     has_stress() const
     {
-      return n_components > first_stress_component;
+      return with_stress;
+    }
+
+    bool
+    has_acceleration() const
+    {
+      return with_acceleration;
     }
 
     /**
@@ -131,6 +141,23 @@ namespace vefs
       for (unsigned int i = 0; i < n_stress_components; ++i)
         fields(node.dofs[first_stress_component + i]) =
           sigma.access_raw_entry(i);
+    }
+
+    /** Only if has_acceleration(). */
+    Tensor<1, dim>
+    acceleration(const Node &node) const
+    {
+      Tensor<1, dim> a;
+      for (unsigned int d = 0; d < dim; ++d)
+        a[d] = fields(node.dofs[first_acceleration_component + d]);
+      return a;
+    }
+
+    void
+    set_acceleration(const Node &node, const Tensor<1, dim> &a)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        fields(node.dofs[first_acceleration_component + d]) = a[d];
     }
 
     /** Component @p c of the layout above, for loops over all fields. */
@@ -353,14 +380,21 @@ namespace vefs
         &dof_handler);
     }
 
-    /** dim + 1, plus the stress components if there is a stress. */
-    const unsigned int                                 n_components;
-    const MappingQ1<dim>                               mapping;
-    const FESystem<dim>                                fe;
-    DoFHandler<dim>                                    dof_handler;
-    AffineConstraints<double>                          constraints;
-    IndexSet                                           owned_dofs;
-    IndexSet                                           relevant_dofs;
+    const bool with_stress;
+    const bool with_acceleration;
+    /**
+     * dim + 1, plus the stress components if there is a stress, plus dim
+     * if there is an acceleration.
+     */
+    const unsigned int n_components;
+    /** After the stress, if any; meaningful only if has_acceleration(). */
+    const unsigned int        first_acceleration_component;
+    const MappingQ1<dim>      mapping;
+    const FESystem<dim>       fe;
+    DoFHandler<dim>           dof_handler;
+    AffineConstraints<double> constraints;
+    IndexSet                  owned_dofs;
+    IndexSet                  relevant_dofs;
     std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
 
   private:

@@ -97,6 +97,11 @@ namespace vefs
     double max_strain_per_step;
     /** 'Postprocess/Energy budget': the energy changes of each stage. */
     bool energy_budget;
+    /** 'Time/Scheme = second order'. */
+    bool second_order;
+    /** 'Time/Time step': the scale of the step that finds the acceleration
+     * of a new run with the second-order scheme. */
+    double time_step;
   };
 } // namespace vefs
 

@@ -38,9 +38,10 @@ namespace vefs
     set_initial_velocity(TransportedFields<dim> &fields) const override;
 
     void
-    start(const TransportedFields<dim> &fields,
-          const LiquidDomain<dim>      &domain,
-          const double                  time) override;
+    start(TransportedFields<dim>  &fields,
+          const LiquidDomain<dim> &domain,
+          const double             time,
+          const bool               new_run) override;
 
     TimeStep
     time_step(const TimeControl            &time,
@@ -49,7 +50,11 @@ namespace vefs
 
     void
     set_advection_velocity(TransportedFields<dim> &fields,
-                           const TimeControl      &time) const override;
+                           const TimeControl      &time) override;
+
+    void
+    finish_advection(TransportedFields<dim> &fields,
+                     const TimeControl      &time) override;
 
     void
     advance(TransportedFields<dim>  &fields,
@@ -82,6 +87,32 @@ namespace vefs
                   const double             expected_cfl,
                   StepStatistics<dim>     &statistics);
 
+    /**
+     * The second-order scheme's acceleration at the nodes flagged in
+     * @p known: a = (2 / tau) (u - u*) - a*, the new forces over rho (the
+     * momentum equation weighs them by 1/2 beside the old ones, rho a*), u
+     * the new velocity in @p fields, u* and a* in @p advected.
+     */
+    void
+    set_acceleration(
+      TransportedFields<dim>                            &fields,
+      const typename TransportedFields<dim>::VectorType &advected,
+      const typename TransportedFields<dim>::VectorType &known,
+      const double                                       tau) const;
+
+    /**
+     * The acceleration of a new run's initial state, which the second-order
+     * scheme's first step needs: one flow solve over a step of a thousandth
+     * of 'Time/Time step' from the initial velocity, which is kept.
+     */
+    void
+    find_initial_acceleration(TransportedFields<dim> &fields);
+
+    /** u + @p factor a at every node of @p fields. */
+    void
+    add_acceleration_to_velocity(TransportedFields<dim> &fields,
+                                 const double            factor) const;
+
     /** The energy of @p fields on @p domain (the energy budget's). */
     double
     energy(const TransportedFields<dim> &fields,
@@ -89,6 +120,11 @@ namespace vefs
 
     const FlowStepParameters parameters;
     const Rheology<dim>     &rheology;
+    /**
+     * Whether the fields' velocity is the second-order trace's, u + tau/2 a,
+     * between set_advection_velocity() and finish_advection().
+     */
+    bool trace_velocity_in_fields = false;
     /** With the energy budget: the energy at the end of the last step. */
     double           last_energy = 0;
     StokesStep<dim> &flow;

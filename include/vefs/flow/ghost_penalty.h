@@ -169,8 +169,9 @@ namespace vefs
     void
     recall_face(const KeptFace &face);
 
-    const FlowStepParameters  parameters;
-    const double              tau;
+    const FlowStepParameters parameters;
+    /** The step of the mass term (StokesCellSystem::mass_tau). */
+    const double              mass_tau;
     const double              mu;
     const FiniteElement<dim> &flow_fe;
     const FlowElements<dim>  &elements;

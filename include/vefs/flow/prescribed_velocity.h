@@ -34,9 +34,10 @@ namespace vefs
     set_initial_velocity(TransportedFields<dim> &fields) const override;
 
     void
-    start(const TransportedFields<dim> &fields,
-          const LiquidDomain<dim>      &domain,
-          const double                  time) override;
+    start(TransportedFields<dim>  &fields,
+          const LiquidDomain<dim> &domain,
+          const double             time,
+          const bool               new_run) override;
 
     TimeStep
     time_step(const TimeControl            &time,
@@ -45,7 +46,7 @@ namespace vefs
 
     void
     set_advection_velocity(TransportedFields<dim> &fields,
-                           const TimeControl      &time) const override;
+                           const TimeControl      &time) override;
 
     void
     advance(TransportedFields<dim>  &fields,

@@ -146,7 +146,13 @@ namespace vefs
     const FlowElements<dim>      &elements;
     const FiniteElement<dim>     &flow_fe;
     const double                  tau;
-    const double                  mu;
+    /**
+     * The step of the mass term: tau, or tau / 2 with the second-order
+     * scheme, whose momentum equation (2 rho / tau) (u - u*) = F^{n+1} +
+     * rho a* weighs the new forces F^{n+1} by 1/2 (doc/time_step_flow.md).
+     */
+    const double mass_tau;
+    const double mu;
     /** The factors of sigma* and of (grad u sigma*) (Rheology). */
     const double sigma_star_factor;
     const double geometric_factor;

@@ -111,15 +111,26 @@ namespace vefs
    *   explicit_stress_factor sigma* + theta^2 k tau S(u) + theta (1 - theta)
    *   k tau S(u*),   S(u) = grad u sigma* + sigma* grad u^T + 2 G eps(u),
    * so the effective viscosity and the geometric term carry theta^2.
+   *
+   * The second-order scheme (doc/time_step_flow.md) averages the old and
+   * new forces in the momentum equation itself, the old ones through the
+   * carried acceleration: its momentum stress is the whole sigma^{n+1} of
+   * the midpoint velocity (momentum weight m = 1, theta = 1/2). In general
+   *   (m k + 1 - m) sigma* + m theta k tau S(u) + m (1 - theta) k tau S(u*),
+   * and m = theta for the first-order scheme.
    */
   template <int dim>
   class Rheology
   {
   public:
-    /** @p max_strain: 'Time/Maximum strain per step' (0: none). */
+    /**
+     * @p max_strain: 'Time/Maximum strain per step' (0: none);
+     * @p second_order: 'Time/Scheme = second order'.
+     */
     Rheology(const MaterialParameters &material,
              const StressParameters   &stress,
-             const double              max_strain)
+             const double              max_strain,
+             const bool                second_order = false)
       : regime(material.regime())
       , eta_s(material.solvent_viscosity)
       , eta_p(material.polymer_viscosity)
@@ -127,7 +138,8 @@ namespace vefs
       , alpha(material.alpha)
       , update(stress.stress_update)
       , max_strain(max_strain)
-      , theta(stress.stress_theta)
+      , theta(second_order ? 0.5 : stress.stress_theta)
+      , momentum_weight(second_order ? 1. : stress.stress_theta)
     {
       Assert(update != StressUpdate::automatic,
              dealii::ExcMessage("StressParameters::resolve() first."));
@@ -150,9 +162,9 @@ namespace vefs
     double
     effective_viscosity(const double tau) const
     {
-      return has_stress()
-               ? eta_s + theta * theta * tau * eta_p / (lambda + alpha * tau)
-               : eta_s + eta_p;
+      return has_stress() ? eta_s + momentum_weight * theta * tau * eta_p /
+                                      (lambda + alpha * tau)
+                          : eta_s + eta_p;
     }
 
     /** k: how much of the advected stress survives the step. */
@@ -169,22 +181,24 @@ namespace vefs
       return theta;
     }
 
-    /** The factor of sigma* in the momentum stress: theta k + 1 - theta. */
+    /** The factor of sigma* in the momentum stress: m k + 1 - m. */
     double
     explicit_stress_factor(const double tau) const
     {
-      return has_stress() ? theta * stress_factor(tau) + 1 - theta : 0.;
+      return has_stress()
+               ? momentum_weight * stress_factor(tau) + 1 - momentum_weight
+               : 0.;
     }
 
-    /** The factor 2 theta^2 k tau of the geometric term (grad u sigma*). */
+    /** The factor 2 m theta k tau of the geometric term (grad u sigma*). */
     double
     geometric_factor(const double tau) const
     {
-      return 2 * theta * theta * stress_factor(tau) * tau;
+      return 2 * momentum_weight * theta * stress_factor(tau) * tau;
     }
 
     /**
-     * The explicit part theta (1 - theta) k tau S(u*) of the momentum stress,
+     * The explicit part m (1 - theta) k tau S(u*) of the momentum stress,
      * zero for theta = 1.
      */
     SymmetricTensor<2, dim>
@@ -193,7 +207,7 @@ namespace vefs
                            const double                   tau) const
     {
       const Tensor<2, dim> stretching = grad_u_star * advected;
-      return theta * (1 - theta) * stress_factor(tau) * tau *
+      return momentum_weight * (1 - theta) * stress_factor(tau) * tau *
              (symmetrize(stretching + transpose(stretching)) +
               2 * shear_modulus() * symmetrize(grad_u_star));
     }
@@ -284,7 +298,10 @@ namespace vefs
     const double       eta_s, eta_p, lambda, alpha;
     const StressUpdate update;
     const double       max_strain;
-    const double       theta;
+    /** The weight theta of the new velocity in the stress law. */
+    const double theta;
+    /** The weight m of sigma^{n+1} in the momentum equation. */
+    const double momentum_weight;
   };
 } // namespace vefs
 

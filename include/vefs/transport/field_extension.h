@@ -34,6 +34,14 @@ namespace vefs
   std::vector<unsigned int>
   velocity_components();
 
+  /**
+   * The velocity components and the acceleration's (if @p fields carry
+   * one): the acceleration is extended like the velocity.
+   */
+  template <int dim>
+  std::vector<unsigned int>
+  velocity_and_acceleration_components(const TransportedFields<dim> &fields);
+
   /** The stress components of @p fields (none without a stress). */
   template <int dim>
   std::vector<unsigned int>

@@ -47,10 +47,10 @@ namespace vefs
      * redistance; correct the volume.
      */
     void
-    advect(TransportedFields<dim>    &fields,
-           const VelocitySource<dim> &velocity,
-           const TimeControl         &time,
-           StepStatistics<dim>       &statistics);
+    advect(TransportedFields<dim> &fields,
+           VelocitySource<dim>    &velocity,
+           const TimeControl      &time,
+           StepStatistics<dim>    &statistics);
 
     /**
      * Steps 5-6: at a remap, adapt the mesh to the new surface unless the

@@ -40,12 +40,14 @@ namespace vefs
 
     /**
      * Ready for the state @p fields at @p time on @p domain (before its
-     * first row).
+     * first row); @p new_run: not resumed from a checkpoint, whose fields
+     * hold all this source needs.
      */
     virtual void
-    start(const TransportedFields<dim> &fields,
-          const LiquidDomain<dim>      &domain,
-          const double                  time) = 0;
+    start(TransportedFields<dim>  &fields,
+          const LiquidDomain<dim> &domain,
+          const double             time,
+          const bool               new_run) = 0;
 
     /** The next step after the step @p last measured, from @p time. */
     virtual TimeStep
@@ -55,11 +57,21 @@ namespace vefs
 
     /**
      * Give @p fields the velocity the characteristics of the step under way
-     * in @p time trace along.
+     * in @p time trace along. Called again after a mesh change before the
+     * advection: the same velocity.
      */
     virtual void
     set_advection_velocity(TransportedFields<dim> &fields,
-                           const TimeControl      &time) const = 0;
+                           const TimeControl      &time) = 0;
+
+    /**
+     * After the advection: give @p fields the advected velocity u* of the
+     * step (the old velocity at the feet), if the trace's was another.
+     */
+    virtual void
+    finish_advection(TransportedFields<dim> &, const TimeControl &)
+    {
+    }
 
     /**
      * The velocity (and the stress) at the end of the step under way in
