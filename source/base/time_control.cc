@@ -76,10 +76,15 @@ namespace vefs
       add_selection(
         prm,
         "Scheme",
-        second_order,
-        std::vector<std::pair<std::string, bool>>{{"first order", false},
-                                                  {"second order", true}},
-        "The splitting of a flow step. first order: the seed's; the "
+        scheme,
+        std::vector<std::pair<std::string, TimeScheme>>{
+          {"automatic", TimeScheme::automatic},
+          {"first order", TimeScheme::first_order},
+          {"second order", TimeScheme::second_order}},
+        "The splitting of a flow step. automatic: second order for a "
+        "material with a stress (elastic solid, Oldroyd-B) unless 'Stress/"
+        "Stress theta' is below 1, first order otherwise (measured in "
+        "doc/time_step_flow.md). first order: the seed's; the "
         "characteristics trace along the last step's velocity, the momentum "
         "equation is implicit in the forces (backward Euler), the stress law "
         "weighted by 'Stress/Stress theta'. second order: the "
@@ -100,6 +105,16 @@ namespace vefs
                         Patterns::Integer(1));
     }
     prm.leave_subsection();
+  }
+
+  void
+  TimeParameters::resolve_scheme(const bool   has_stress,
+                                 const double stress_theta)
+  {
+    if (scheme == TimeScheme::automatic)
+      second_order = has_stress && stress_theta == 1;
+    else
+      second_order = scheme == TimeScheme::second_order;
   }
 
   void

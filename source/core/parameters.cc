@@ -155,6 +155,9 @@ namespace vefs
     flow.resolve(regime);
     if (time.automatic_max_strain)
       time.max_strain_per_step = regime == Regime::elastic_solid ? 0.25 : 0;
+    time.resolve_scheme(regime != Regime::newtonian &&
+                          !transport.velocity_is_prescribed(),
+                        stress.stress_theta);
   }
 
   void
@@ -220,7 +223,7 @@ namespace vefs
     require(!time.second_order || !transport.velocity_is_prescribed(),
             "Time/Scheme",
             "a prescribed velocity is always traced at mid-step and solves "
-            "no flow: leave it 'first order'");
+            "no flow: leave it 'automatic' or 'first order'");
     require(!postprocess.energy_budget || !transport.velocity_is_prescribed(),
             "Postprocess/Energy budget",
             "a prescribed velocity solves no flow and has no energy budget: "

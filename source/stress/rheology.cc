@@ -120,8 +120,10 @@ namespace vefs
         "theta sigma^{n+1} + (1 - theta) sigma*. 1: the seed's backward "
         "Euler, which damps elastic oscillations (first order in tau); 0.5: "
         "the midpoint rule, which keeps the energy of a linear elastic "
-        "oscillation. No effect on Newtonian liquids. See "
-        "doc/bouncing_ball.md.",
+        "oscillation. No effect on Newtonian liquids. Only with the "
+        "first-order 'Time/Scheme' (below 1, 'automatic' chooses it); the "
+        "second-order scheme takes the midpoint velocity itself. See "
+        "doc/viscoelastic.md.",
         Patterns::Double(0.5, 1));
     }
     prm.leave_subsection();

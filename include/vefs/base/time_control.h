@@ -8,6 +8,14 @@
 
 namespace vefs
 {
+  /** 'Time/Scheme': the splitting of a flow step. */
+  enum class TimeScheme
+  {
+    automatic,
+    first_order,
+    second_order
+  };
+
   /** The run's span and the control of its steps: subsection "Time". */
   struct TimeParameters
   {
@@ -37,9 +45,20 @@ namespace vefs
     /**
      * 'Scheme = second order': the characteristics trace along the mid-step
      * velocity and the momentum equation takes the mean of the old and new
-     * forces (doc/time_step_flow.md, "The second-order scheme").
+     * forces (doc/time_step_flow.md, "The second-order scheme"). While
+     * @p automatic_scheme it is set by the material: Parameters::check().
      */
     bool second_order = false;
+    /** The entry; resolve_scheme() sets second_order from it. */
+    TimeScheme scheme = TimeScheme::automatic;
+
+    /**
+     * 'automatic' becomes second order for a material with a stress
+     * (@p has_stress) unless @p stress_theta is below 1, first order
+     * otherwise.
+     */
+    void
+    resolve_scheme(const bool has_stress, const double stress_theta);
   };
 
   /** When the visualization is written, and what the screen shows:

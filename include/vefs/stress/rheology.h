@@ -7,6 +7,7 @@
 
 #include <vefs/stress/tensor_exponential.h>
 
+#include <cmath>
 #include <vector>
 
 namespace vefs
@@ -117,7 +118,11 @@ namespace vefs
    * carried acceleration: its momentum stress is the whole sigma^{n+1} of
    * the midpoint velocity (momentum weight m = 1, theta = 1/2). In general
    *   (m k + 1 - m) sigma* + m theta k tau S(u) + m (1 - theta) k tau S(u*),
-   * and m = theta for the first-order scheme.
+   * and m = theta for the first-order scheme. Its relaxation (alpha > 0) is
+   * integrated exactly for a constant source over the step instead of by
+   * backward Euler: sigma* decays by k_s = exp(-x), x = alpha tau / lambda,
+   * and the new terms carry k = (1 - exp(-x)) / x (both 1 for a solid);
+   * the first-order scheme has k_s = k = lambda / (lambda + alpha tau).
    */
   template <int dim>
   class Rheology
@@ -140,6 +145,7 @@ namespace vefs
       , max_strain(max_strain)
       , theta(second_order ? 0.5 : stress.stress_theta)
       , momentum_weight(second_order ? 1. : stress.stress_theta)
+      , exponential_relaxation(second_order)
     {
       Assert(update != StressUpdate::automatic,
              dealii::ExcMessage("StressParameters::resolve() first."));
@@ -162,16 +168,36 @@ namespace vefs
     double
     effective_viscosity(const double tau) const
     {
-      return has_stress() ? eta_s + momentum_weight * theta * tau * eta_p /
-                                      (lambda + alpha * tau)
-                          : eta_s + eta_p;
+      if (!has_stress())
+        return eta_s + eta_p;
+      if (exponential_relaxation)
+        return eta_s + momentum_weight * theta * stress_factor(tau) * tau *
+                         eta_p / lambda;
+      return eta_s +
+             momentum_weight * theta * tau * eta_p / (lambda + alpha * tau);
     }
 
-    /** k: how much of the advected stress survives the step. */
+    /** k: the factor of what the step adds to the advected stress. */
     double
     stress_factor(const double tau) const
     {
-      return has_stress() ? lambda / (lambda + alpha * tau) : 0.;
+      if (!has_stress())
+        return 0.;
+      if (exponential_relaxation)
+        {
+          const double x = alpha * tau / lambda;
+          return x > 0 ? -std::expm1(-x) / x : 1.;
+        }
+      return lambda / (lambda + alpha * tau);
+    }
+
+    /** k_s: how much of the advected stress survives the step. */
+    double
+    relaxation_factor(const double tau) const
+    {
+      if (exponential_relaxation && has_stress())
+        return std::exp(-alpha * tau / lambda);
+      return stress_factor(tau);
     }
 
     /** The weight theta of the new velocity in the stress law. */
@@ -181,12 +207,12 @@ namespace vefs
       return theta;
     }
 
-    /** The factor of sigma* in the momentum stress: m k + 1 - m. */
+    /** The factor of sigma* in the momentum stress: m k_s + 1 - m. */
     double
     explicit_stress_factor(const double tau) const
     {
       return has_stress()
-               ? momentum_weight * stress_factor(tau) + 1 - momentum_weight
+               ? momentum_weight * relaxation_factor(tau) + 1 - momentum_weight
                : 0.;
     }
 
@@ -231,10 +257,21 @@ namespace vefs
             tensor_exponential(limited_strain(grad_u, tau));
           const Tensor<2, dim> carried =
             E * Tensor<2, dim>(conformation(advected)) * transpose(E);
+          if (exponential_relaxation)
+            // The advected part decays by k_s, what the step carried in by
+            // k, as in the linear formula.
+            return relaxation_factor(tau) * advected +
+                   stress_factor(tau) * shear_modulus() *
+                     (symmetrize(carried) - conformation(advected));
           return stress_factor(tau) * shear_modulus() *
                  (symmetrize(carried) - unit_symmetric_tensor<dim>());
         }
       const Tensor<2, dim> stretching = grad_u * advected;
+      if (exponential_relaxation)
+        return relaxation_factor(tau) * advected +
+               stress_factor(tau) *
+                 (tau * symmetrize(stretching + transpose(stretching)) +
+                  (tau * 2 * eta_p / lambda) * symmetrize(grad_u));
       return stress_factor(tau) *
              (advected + tau * symmetrize(stretching + transpose(stretching)) +
               (tau * 2 * eta_p / lambda) * symmetrize(grad_u));
@@ -302,6 +339,8 @@ namespace vefs
     const double theta;
     /** The weight m of sigma^{n+1} in the momentum equation. */
     const double momentum_weight;
+    /** The second-order scheme's relaxation factors (k_s = exp(-x)). */
+    const bool exponential_relaxation;
   };
 } // namespace vefs
 
