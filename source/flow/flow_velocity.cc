@@ -161,6 +161,7 @@ namespace vefs
     const typename TransportedFields<dim>::VectorType &known,
     const double                                       tau) const
   {
+    const double w = parameters.new_force_weight();
     for (const auto &node : fields.nodes())
       if (known(node.dofs[0]) != 0)
         {
@@ -170,10 +171,10 @@ namespace vefs
               advected(node.dofs[fields.first_acceleration_component + d]);
           fields.set_acceleration(
             node,
-            (2 / tau) *
+            (1 / (w * tau)) *
                 (fields.velocity(node) -
                  TransportedFields<dim>::velocity_slots(advected, node)) -
-              advected_acceleration);
+              ((1 - w) / w) * advected_acceleration);
         }
     fields.finalize();
   }
@@ -194,7 +195,7 @@ namespace vefs
     fields.copy_to(initial);
     fields.initialize_vector(known);
     flow.copy_velocity_to(fields, known);
-    // The initial acceleration a* is zero: a = (2 / tau) (u - u0).
+    // The initial acceleration a* is zero: a = (u - u0) / (w tau).
     set_acceleration(fields, initial, known, tau);
     for (const auto &node : fields.nodes())
       fields.set_velocity(node,

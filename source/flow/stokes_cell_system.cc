@@ -17,7 +17,7 @@ namespace vefs
     , elements(elements)
     , flow_fe(flow_fe)
     , tau(tau)
-    , mass_tau(parameters.second_order ? tau / 2 : tau)
+    , mass_tau(parameters.new_force_weight() * tau)
     , mu(rheology.effective_viscosity(tau))
     , sigma_star_factor(rheology.explicit_stress_factor(tau))
     , geometric_factor(rheology.geometric_factor(tau))
@@ -279,13 +279,13 @@ namespace vefs
     for (const unsigned int v : transport_cell->vertex_indices())
       {
         Tensor<1, dim> u = fields.velocity_at(transport_cell, v);
-        // The second-order scheme's old forces, rho a*, join the mass term:
-        // rho / mass_tau (u* + mass_tau a*).
+        // The second-order scheme's old forces join the mass term:
+        // rho / (w tau) (u* + (1 - w) tau a*), w the new forces' weight.
         Tensor<1, dim> u_with_old_forces = u;
         if (fields.has_acceleration())
           for (unsigned int d = 0; d < dim; ++d)
             u_with_old_forces[d] +=
-              mass_tau *
+              (1 - parameters.new_force_weight()) * tau *
               fields.value_at(transport_cell,
                               v,
                               fields.first_acceleration_component + d);

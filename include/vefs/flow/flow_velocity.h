@@ -89,9 +89,10 @@ namespace vefs
 
     /**
      * The second-order scheme's acceleration at the nodes flagged in
-     * @p known: a = (2 / tau) (u - u*) - a*, the new forces over rho (the
-     * momentum equation weighs them by 1/2 beside the old ones, rho a*), u
-     * the new velocity in @p fields, u* and a* in @p advected.
+     * @p known: a = ((u - u*) / tau - (1 - w) a*) / w, the new forces over
+     * rho (the momentum equation weighs them by w, about 1/2, beside the old
+     * ones, rho a*: FlowStepParameters::new_force_weight()), u the new
+     * velocity in @p fields, u* and a* in @p advected.
      */
     void
     set_acceleration(

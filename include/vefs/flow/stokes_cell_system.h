@@ -147,9 +147,10 @@ namespace vefs
     const FiniteElement<dim>     &flow_fe;
     const double                  tau;
     /**
-     * The step of the mass term: tau, or tau / 2 with the second-order
-     * scheme, whose momentum equation (2 rho / tau) (u - u*) = F^{n+1} +
-     * rho a* weighs the new forces F^{n+1} by 1/2 (doc/time_step_flow.md).
+     * The step of the mass term: w tau, w the weight of the new forces (1,
+     * or about 1/2 with the second-order scheme, whose momentum equation
+     * (rho / (w tau)) (u - u*) = F^{n+1} + ((1 - w) / w) rho a*:
+     * FlowStepParameters::new_force_weight(); doc/time_step_flow.md).
      */
     const double mass_tau;
     const double mu;
