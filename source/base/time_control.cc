@@ -90,10 +90,12 @@ namespace vefs
         "weighted by 'Stress/Stress theta'. second order: the "
         "characteristics trace along the mid-step velocity u + tau/2 a (a "
         "the acceleration of the last step, carried as a field), the "
-        "momentum equation takes the mean of the old and the new forces "
-        "(the trapezoidal rule, velocity Verlet for a body in free fall or a "
-        "surface wave) and the stress law the midpoint velocity. A freely "
-        "falling body then follows the exact parabola at any step. See "
+        "momentum equation weighs the new forces by 0.51 and the old ones "
+        "by 0.49 (nearly the trapezoidal rule: velocity Verlet for a body "
+        "in free fall or a surface wave), the stress law takes the midpoint "
+        "velocity and the relaxation is integrated exactly over the step. A "
+        "freely falling body then follows the exact parabola at any step. "
+        "See "
         "doc/time_step_flow.md. Not used with a prescribed velocity, which "
         "is always traced at mid-step.");
       prm.add_parameter("Maximum steps",

@@ -184,9 +184,9 @@ namespace vefs
   FlowVelocity<dim>::find_initial_acceleration(TransportedFields<dim> &fields)
   {
     TimerOutput::Scope scope(timer, "initial acceleration");
-    // Over one 'Time step': the pressure stabilisation weakens as the step
-    // shrinks, and over a thousandth of it the pressure's oscillation gave
-    // a body in free fall accelerations from -47 to 66 m/s^2 instead of g.
+    // Over one 'Time step': over a thousandth of it a body in free fall got
+    // accelerations from -47 to 66 m/s^2 instead of g (the pressure
+    // stabilisation weakens as the step shrinks).
     const double tau = parameters.time_step;
     flow.assemble(fields, tau);
     flow.build_preconditioner();

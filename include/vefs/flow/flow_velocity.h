@@ -103,8 +103,8 @@ namespace vefs
 
     /**
      * The acceleration of a new run's initial state, which the second-order
-     * scheme's first step needs: one flow solve over a step of a thousandth
-     * of 'Time/Time step' from the initial velocity, which is kept.
+     * scheme's first step needs: one flow solve over one 'Time/Time step'
+     * from the initial velocity, which is kept.
      */
     void
     find_initial_acceleration(TransportedFields<dim> &fields);
