@@ -188,9 +188,7 @@ namespace vefs
     // accelerations from -47 to 66 m/s^2 instead of g (the pressure
     // stabilisation weakens as the step shrinks).
     const double tau = parameters.time_step;
-    flow.assemble(fields, tau);
-    flow.build_preconditioner();
-    solve_with_contact(fields, tau);
+    solve_step(fields, tau);
     typename TransportedFields<dim>::VectorType initial, known;
     fields.copy_to(initial);
     fields.initialize_vector(known);
@@ -204,13 +202,10 @@ namespace vefs
     fields.finalize();
     if (parameters.flow.extend_outside_velocity)
       unflag_nodes_outside_liquid(fields, known);
-    std::vector<unsigned int> acceleration;
-    for (unsigned int d = 0; d < dim; ++d)
-      acceleration.push_back(fields.first_acceleration_component + d);
     extend_flow_fields(fields,
                        known,
                        parameters.flow.extension_layers,
-                       acceleration);
+                       acceleration_components(fields));
   }
 
   template <int dim>
@@ -231,15 +226,7 @@ namespace vefs
       TimerOutput::Scope scope(timer, "3 diffusion: setup");
       flow.setup(domain, time.time() + time.tau());
     }
-    {
-      TimerOutput::Scope scope(timer, "3 diffusion: assembly");
-      flow.assemble(fields, time.tau());
-    }
-    {
-      TimerOutput::Scope scope(timer, "3 diffusion: preconditioner");
-      flow.build_preconditioner();
-    }
-    statistics.linear_iterations = solve_with_contact(fields, time.tau());
+    statistics.linear_iterations = solve_step(fields, time.tau());
     update_fields(fields, domain, time.tau(), time.expected_cfl(), statistics);
     if (parameters.energy_budget)
       {
@@ -247,6 +234,22 @@ namespace vefs
         statistics.energy_change_extension = extended - last_energy;
         last_energy                        = extended;
       }
+  }
+
+  template <int dim>
+  unsigned int
+  FlowVelocity<dim>::solve_step(const TransportedFields<dim> &fields,
+                                const double                  tau)
+  {
+    {
+      TimerOutput::Scope scope(timer, "3 diffusion: assembly");
+      flow.assemble(fields, tau);
+    }
+    {
+      TimerOutput::Scope scope(timer, "3 diffusion: preconditioner");
+      flow.build_preconditioner();
+    }
+    return solve_with_contact(fields, tau);
   }
 
   template <int dim>

@@ -15,7 +15,7 @@ namespace vefs
                                   const FlowElements<dim>  &elements,
                                   const double              tau)
     : parameters(parameters)
-    , mass_tau(parameters.new_force_weight() * tau)
+    , mass_tau(parameters.mass_step(tau))
     , mu(rheology.effective_viscosity(tau))
     , flow_fe(flow_fe)
     , elements(elements)

@@ -17,7 +17,8 @@ namespace vefs
     , elements(elements)
     , flow_fe(flow_fe)
     , tau(tau)
-    , mass_tau(parameters.new_force_weight() * tau)
+    , mass_tau(parameters.mass_step(tau))
+    , old_force_step(parameters.old_force_step(tau))
     , mu(rheology.effective_viscosity(tau))
     , sigma_star_factor(rheology.explicit_stress_factor(tau))
     , geometric_factor(rheology.geometric_factor(tau))
@@ -285,7 +286,7 @@ namespace vefs
         if (fields.has_acceleration())
           for (unsigned int d = 0; d < dim; ++d)
             u_with_old_forces[d] +=
-              (1 - parameters.new_force_weight()) * tau *
+              old_force_step *
               fields.value_at(transport_cell,
                               v,
                               fields.first_acceleration_component + d);

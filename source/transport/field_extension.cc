@@ -225,12 +225,22 @@ namespace vefs
 
   template <int dim>
   std::vector<unsigned int>
-  velocity_and_acceleration_components(const TransportedFields<dim> &fields)
+  acceleration_components(const TransportedFields<dim> &fields)
   {
-    std::vector<unsigned int> components = velocity_components<dim>();
+    std::vector<unsigned int> components;
     if (fields.has_acceleration())
       for (unsigned int d = 0; d < dim; ++d)
         components.push_back(fields.first_acceleration_component + d);
+    return components;
+  }
+
+  template <int dim>
+  std::vector<unsigned int>
+  velocity_and_acceleration_components(const TransportedFields<dim> &fields)
+  {
+    std::vector<unsigned int> components = velocity_components<dim>();
+    for (const unsigned int c : acceleration_components(fields))
+      components.push_back(c);
     return components;
   }
 
@@ -268,6 +278,10 @@ namespace vefs
   stress_components<2>(const TransportedFields<2> &);
   template std::vector<unsigned int>
   stress_components<3>(const TransportedFields<3> &);
+  template std::vector<unsigned int>
+  acceleration_components<2>(const TransportedFields<2> &);
+  template std::vector<unsigned int>
+  acceleration_components<3>(const TransportedFields<3> &);
   template std::vector<unsigned int>
   velocity_and_acceleration_components<2>(const TransportedFields<2> &);
   template std::vector<unsigned int>

@@ -114,6 +114,23 @@ namespace vefs
     {
       return second_order ? 0.51 : 1.;
     }
+
+    /** The step w tau of the mass term (and of the stabilisations). */
+    double
+    mass_step(const double tau) const
+    {
+      return new_force_weight() * tau;
+    }
+
+    /**
+     * (1 - w) tau: rho / (w tau) (u* + (1 - w) tau a*) puts the old forces
+     * beside the mass term; 0 for the first-order scheme.
+     */
+    double
+    old_force_step(const double tau) const
+    {
+      return (1 - new_force_weight()) * tau;
+    }
     /** 'Time/Time step': the scale of the step that finds the acceleration
      * of a new run with the second-order scheme. */
     double time_step;

@@ -70,6 +70,13 @@ namespace vefs
 
   private:
     /**
+     * Assemble the step of length @p tau on the set-up liquid domain and
+     * solve it (solve_with_contact()); the Krylov iterations of all solves.
+     */
+    unsigned int
+    solve_step(const TransportedFields<dim> &fields, const double tau);
+
+    /**
      * Solve the assembled step, again while the contact set changes; the
      * Krylov iterations of all solves.
      */

@@ -153,6 +153,8 @@ namespace vefs
      * FlowStepParameters::new_force_weight(); doc/time_step_flow.md).
      */
     const double mass_tau;
+    /** (1 - w) tau, the step of the old forces rho a* (0: none). */
+    const double old_force_step;
     const double mu;
     /** The factors of sigma* and of (grad u sigma*) (Rheology). */
     const double sigma_star_factor;

@@ -34,6 +34,11 @@ namespace vefs
   std::vector<unsigned int>
   velocity_components();
 
+  /** The acceleration components of @p fields (none without one). */
+  template <int dim>
+  std::vector<unsigned int>
+  acceleration_components(const TransportedFields<dim> &fields);
+
   /**
    * The velocity components and the acceleration's (if @p fields carry
    * one): the acceleration is extended like the velocity.
