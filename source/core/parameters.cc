@@ -220,6 +220,12 @@ namespace vefs
             "Stress/Stress theta",
             "weighs the stress law of 'Time/Scheme = first order' only; the "
             "second-order scheme uses the midpoint velocity: leave it 1");
+    require(!time.second_order || time.strain_bound_shortens_step,
+            "Time/Strain bound",
+            "'local' changes the stress update after the second-order "
+            "scheme's momentum equation has assumed the whole one, which "
+            "is unstable at an impact: use 'Time/Scheme = first order' (or "
+            "'automatic') with it");
     require(!time.second_order || !transport.velocity_is_prescribed(),
             "Time/Scheme",
             "a prescribed velocity is always traced at mid-step and solves "

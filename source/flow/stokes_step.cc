@@ -112,7 +112,8 @@ namespace vefs
     , dof_handler(triangulation)
     , rheology(parameters.material,
                parameters.stress,
-               parameters.max_strain_per_step)
+               parameters.max_strain_per_step,
+               parameters.second_order)
     , contact(parameters.cavity)
     , elements(parameters.flow, parameters.max_level)
   {
