@@ -92,7 +92,7 @@ namespace vefs
              rheology.has_stress(),
              parameters.time.second_order,
              parameters.cavity.periodic_directions())
-    , flow(parameters.flow_step(), triangulation)
+    , flow(parameters.flow_step(), rheology, triangulation)
     , statistics_file(output.path(), comm, !checkpoint.empty())
     , visualization(parameters.output_directory)
     , energy_watch(energy_is_watched(parameters),

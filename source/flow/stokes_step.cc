@@ -106,14 +106,12 @@ namespace vefs
   template <int dim>
   StokesStep<dim>::StokesStep(
     const FlowStepParameters                        &parameters,
+    const Rheology<dim>                             &rheology,
     const parallel::distributed::Triangulation<dim> &triangulation)
     : parameters(parameters)
     , comm(triangulation.get_communicator())
     , dof_handler(triangulation)
-    , rheology(parameters.material,
-               parameters.stress,
-               parameters.max_strain_per_step,
-               parameters.second_order)
+    , rheology(rheology)
     , contact(parameters.cavity)
     , elements(parameters.flow, parameters.max_level)
   {

@@ -82,7 +82,11 @@ namespace
       ThrownBlocks());
     const vefs::LiquidDomain<2> domain(fields);
 
-    vefs::StokesStep<2> flow(parameters.flow_step(), triangulation);
+    const vefs::Rheology<2> rheology(parameters.material,
+                                     parameters.stress,
+                                     parameters.time.max_strain_per_step,
+                                     parameters.time.second_order);
+    vefs::StokesStep<2> flow(parameters.flow_step(), rheology, triangulation);
     const double        tau = 0.01;
     flow.setup(domain, tau);
     flow.assemble(fields, tau);

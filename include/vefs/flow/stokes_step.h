@@ -42,7 +42,13 @@ namespace vefs
   public:
     using BlockVector = TrilinosWrappers::MPI::BlockVector;
 
+    /**
+     * @p rheology: the stress law of the run, the object the stress update
+     * uses too: the momentum equation's stress coefficients must be those
+     * of the update, which the time scheme sets for both.
+     */
     StokesStep(const FlowStepParameters                        &parameters,
+               const Rheology<dim>                             &rheology,
                const parallel::distributed::Triangulation<dim> &triangulation);
 
     /** Flow unknowns on the cells of @p domain that hold liquid. */
@@ -209,7 +215,7 @@ namespace vefs
     BlockVector               system_rhs;
     BlockVector               lumped_pressure_mass;
     BlockVector               solution;
-    const Rheology<dim>       rheology;
+    const Rheology<dim>      &rheology;
     ContactWalls<dim>         contact;
     FlowElements<dim>         elements;
     /** The unknowns of the finest cells interpolated from their parent's
