@@ -84,20 +84,19 @@ namespace vefs
         "The splitting of a flow step. automatic: second order for a "
         "material with a stress (elastic solid, Oldroyd-B) unless 'Stress/"
         "Stress theta' is below 1 or 'Strain bound' is local, first order "
-        "otherwise (measured in doc/time_step_flow.md). first order: the seed's; the "
-        "characteristics trace along the last step's velocity, the momentum "
-        "equation is implicit in the forces (backward Euler), the stress law "
-        "weighted by 'Stress/Stress theta'. second order: the "
-        "characteristics trace along the mid-step velocity u + tau/2 a (a "
-        "the acceleration of the last step, carried as a field), the "
+        "otherwise (measured in doc/time_step_flow.md). first order: the "
+        "seed's; the characteristics trace along the last step's velocity, "
+        "the momentum equation is implicit in the forces (backward Euler), "
+        "the stress law weighted by 'Stress/Stress theta'. second order: "
+        "the characteristics trace along the mid-step velocity u + tau/2 a "
+        "(a the acceleration of the last step, carried as a field), the "
         "momentum equation weighs the new forces by 0.51 and the old ones "
         "by 0.49 (nearly the trapezoidal rule: velocity Verlet for a body "
         "in free fall or a surface wave), the stress law takes the midpoint "
         "velocity and the relaxation is integrated exactly over the step. A "
         "freely falling body then follows the exact parabola at any step. "
-        "See "
-        "doc/time_step_flow.md. Not used with a prescribed velocity, which "
-        "is always traced at mid-step.");
+        "See doc/time_step_flow.md. Not used with a prescribed velocity, "
+        "which is always traced at mid-step.");
       prm.add_parameter("Maximum steps",
                         maximum_steps,
                         "Largest number of time steps: a scene whose End "

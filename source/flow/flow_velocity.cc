@@ -164,18 +164,12 @@ namespace vefs
     const double w = parameters.new_force_weight();
     for (const auto &node : fields.nodes())
       if (known(node.dofs[0]) != 0)
-        {
-          Tensor<1, dim> advected_acceleration;
-          for (unsigned int d = 0; d < dim; ++d)
-            advected_acceleration[d] =
-              advected(node.dofs[fields.first_acceleration_component + d]);
-          fields.set_acceleration(
-            node,
-            (1 / (w * tau)) *
-                (fields.velocity(node) -
-                 TransportedFields<dim>::velocity_slots(advected, node)) -
-              ((1 - w) / w) * advected_acceleration);
-        }
+        fields.set_acceleration(
+          node,
+          (1 / (w * tau)) *
+              (fields.velocity(node) -
+               TransportedFields<dim>::velocity_slots(advected, node)) -
+            ((1 - w) / w) * fields.acceleration_slots(advected, node));
     fields.finalize();
   }
 

@@ -284,12 +284,8 @@ namespace vefs
         // rho / (w tau) (u* + (1 - w) tau a*), w the new forces' weight.
         Tensor<1, dim> u_with_old_forces = u;
         if (fields.has_acceleration())
-          for (unsigned int d = 0; d < dim; ++d)
-            u_with_old_forces[d] +=
-              old_force_step *
-              fields.value_at(transport_cell,
-                              v,
-                              fields.first_acceleration_component + d);
+          u_with_old_forces +=
+            old_force_step * fields.acceleration_at(transport_cell, v);
         const SymmetricTensor<2, dim> sigma =
           with_stress ? fields.stress_at(transport_cell, v)
                       : SymmetricTensor<2, dim>();

@@ -147,9 +147,19 @@ namespace vefs
     Tensor<1, dim>
     acceleration(const Node &node) const
     {
+      return acceleration_slots(fields, node);
+    }
+
+    /**
+     * The acceleration slots of @p vector, a vector of this layout (a copy
+     * of the fields from before the flow step), at @p node.
+     */
+    Tensor<1, dim>
+    acceleration_slots(const VectorType &vector, const Node &node) const
+    {
       Tensor<1, dim> a;
       for (unsigned int d = 0; d < dim; ++d)
-        a[d] = fields(node.dofs[first_acceleration_component + d]);
+        a[d] = vector(node.dofs[first_acceleration_component + d]);
       return a;
     }
 
@@ -217,6 +227,18 @@ namespace vefs
         sigma.access_raw_entry(i) =
           fields(cell->vertex_dof_index(v, first_stress_component + i));
       return sigma;
+    }
+
+    /** Only if has_acceleration(). */
+    template <typename CellIterator>
+    Tensor<1, dim>
+    acceleration_at(const CellIterator &cell, const unsigned int v) const
+    {
+      Tensor<1, dim> a;
+      for (unsigned int d = 0; d < dim; ++d)
+        a[d] =
+          fields(cell->vertex_dof_index(v, first_acceleration_component + d));
+      return a;
     }
 
     template <typename CellIterator>
