@@ -152,6 +152,7 @@ namespace vefs
     // settings of the elastic scenes: doc/bouncing_ball.md).
     const Regime regime = material.regime();
     stress.resolve(regime);
+    transport.resolve();
     flow.resolve(regime);
     if (time.automatic_max_strain)
       time.max_strain_per_step = regime == Regime::elastic_solid ? 0.25 : 0;
@@ -199,7 +200,7 @@ namespace vefs
       !mesh.band_in_one_change() ||
         (transport.level_set_interpolation == LevelSetInterpolation::linear &&
          transport.velocity_interpolation == VelocityInterpolation::linear &&
-         !transport.cubic_stress_interpolation),
+         !transport.cubic_stress_interpolation()),
       "Mesh refinement/Band placement",
       "'predicted, one change' keeps the Q1 fields of the coarsened "
       "cells only: it needs 'linear' for 'Level set interpolation', "

@@ -169,10 +169,11 @@ main()
            t.level_set_interpolation ==
                vefs::LevelSetInterpolation::gradient_augmented &&
              t.velocity_interpolation == vefs::VelocityInterpolation::cubic &&
-             t.cubic_stress_interpolation && t.remap_distance == 10 &&
-             t.redistancing_interval == 0 && !t.volume_correction &&
-             f.flow_on_parents && f.extension_layers == 7 &&
-             f.extend_outside_velocity &&
+             t.stress_interpolation ==
+               vefs::StressInterpolation::limited_cubic &&
+             t.remap_distance == 10 && t.redistancing_interval == 0 &&
+             !t.volume_correction && f.flow_on_parents &&
+             f.extension_layers == 7 && f.extend_outside_velocity &&
              f.outside_stress == vefs::OutsideStress::extension &&
              parameters.stress.stress_update ==
                vefs::StressUpdate::exponential &&

@@ -33,7 +33,7 @@ namespace vefs
                       const double               shear_modulus)
       : level_set(parameters.level_set_interpolation)
       , velocity(parameters.velocity_interpolation)
-      , cubic_stress(parameters.cubic_stress_interpolation && has_stress)
+      , cubic_stress(parameters.cubic_stress_interpolation() && has_stress)
       , shear_modulus(cubic_stress ? shear_modulus : 1.)
     {
     }

@@ -24,6 +24,15 @@ namespace vefs
     limited_cubic
   };
 
+  /** How the stress is interpolated at the feet ('Stress interpolation'). */
+  enum class StressInterpolation
+  {
+    /** As the velocity: TransportParameters::resolve(). */
+    automatic,
+    linear,
+    limited_cubic
+  };
+
   /**
    * How the fields are carried along the characteristics and the surface
    * kept (doc/transport.md): subsection "Transport". Its last two entries
@@ -39,8 +48,7 @@ namespace vefs
       LevelSetInterpolation::linear;
     VelocityInterpolation velocity_interpolation =
       VelocityInterpolation::linear;
-    /** The stress at the feet by limited cubic ('Stress interpolation'). */
-    bool cubic_stress_interpolation = false;
+    StressInterpolation stress_interpolation = StressInterpolation::automatic;
     /** Finest cells the surface moves between remaps; 0: every step. */
     double       remap_distance        = 0;
     unsigned int redistancing_interval = 1;
@@ -48,6 +56,18 @@ namespace vefs
 
     std::string prescribed_velocity   = "";
     std::string exact_final_level_set = "";
+
+    /**
+     * 'automatic' stress interpolation becomes limited cubic where the
+     * velocity is interpolated by (limited) cubic, linear otherwise: an
+     * elastic wave carries its energy in both fields (doc/bouncing_ball.md).
+     */
+    void
+    resolve();
+
+    /** The stress at the feet by limited cubic (after resolve()). */
+    bool
+    cubic_stress_interpolation() const;
 
     /** Transport only: the velocity is given and the flow is not solved. */
     bool
