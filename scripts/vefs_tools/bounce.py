@@ -17,6 +17,7 @@ def bounce_events(directory):
     s = read_statistics(directory)
     rho = parameter_float(read_parameters(directory), "Material/Density")
     t, y, F = s["time"], s["centroid_y"], s["contact_force"]
+    v_mean = s["centroid_velocity_y"]
     n = len(t)
     m = rho * s["volume"][0]
     energy = [k + p + e for k, p, e in zip(s["kinetic_energy"],
@@ -51,7 +52,9 @@ def bounce_events(directory):
                                        for i in range(first, lift + 1)),
         "impulse": sum(F[i] * (t[i] - t[i - 1])
                        for i in range(first, lift + 1)),
-        "momentum_change": m * (v_after - v_before)
+        # The liquid's momentum is m times its mean velocity: exact, where
+        # differences of the centroid are not.
+        "momentum_change": m * (v_mean[lift] - v_mean[first - 1])
         + m * G * (t[lift] - t[first - 1]),
         "energy_left": energy[lift] / energy[0],
     })

@@ -201,7 +201,9 @@ namespace vefs
              "mesh_changes: changes of the mesh in the step (refinement "
              "ahead of the surface, adaptation after the advection), each "
              "a rebuild of the whole mesh; advected_cells ('Band placement "
-             "= predicted' only): cells of the mesh the advection ran on.\n"
+             "= predicted' only): cells of the mesh the advection ran on; "
+             "contact_force: the normal force of the contact walls on the "
+             "liquid over the step (its impulse over the step length).\n"
           << column_header() << '\n';
         header_written = true;
       }

@@ -421,6 +421,7 @@ namespace vefs
                << "max_velocity_gradient " << exact(s.max_velocity_gradient)
                << '\n'
                << "linear_iterations " << s.linear_iterations << '\n'
+               << "contact_reaction " << exact(s.contact_reaction) << '\n'
                << "wall_time " << exact(s.wall_time) << '\n'
                << "initial_volume " << exact(state.initial_volume) << '\n'
                << "expected_volume " << exact(state.expected_volume) << '\n'
@@ -513,12 +514,17 @@ namespace vefs
         s.max_velocity          = to_double(value("max_velocity"));
         s.max_velocity_gradient = to_double(value("max_velocity_gradient"));
         s.linear_iterations     = to_unsigned(value("linear_iterations"));
-        s.wall_time             = to_double(value("wall_time"));
-        state.initial_volume    = to_double(value("initial_volume"));
-        state.expected_volume   = to_double(value("expected_volume"));
-        state.last_output_step  = value("last_output_step") == "none"
-                                    ? numbers::invalid_unsigned_int
-                                    : to_unsigned(value("last_output_step"));
+        // Checkpoints written before the mean contact force have no such
+        // line (their runs then restart that mean from zero).
+        if (const auto found = entries.find("contact_reaction");
+            found != entries.end() && !found->second.empty())
+          s.contact_reaction = to_double(found->second[0]);
+        s.wall_time            = to_double(value("wall_time"));
+        state.initial_volume   = to_double(value("initial_volume"));
+        state.expected_volume  = to_double(value("expected_volume"));
+        state.last_output_step = value("last_output_step") == "none"
+                                   ? numbers::invalid_unsigned_int
+                                   : to_unsigned(value("last_output_step"));
         // Checkpoints written before the remap distance have no such line.
         if (const auto found = entries.find("level_set_history");
             found != entries.end())

@@ -93,9 +93,18 @@ namespace vefs
     /** Only with a stress: see StressUpdateReport. */
     double       max_velocity_gradient = 0;
     unsigned int strain_limited_points = 0;
-    /** Only with contact walls: see ContactWalls. */
+    /**
+     * Only with contact walls: the walls' normal force on the liquid over
+     * the step, its impulse over tau (see FlowVelocity::measure()), and
+     * the contact length (area in 3D) at the end of the step.
+     */
     double contact_force   = 0;
     double contact_measure = 0;
+    /**
+     * The walls' reaction in the momentum equation of the step (ContactWalls:
+     * the force at the end of the step); kept for the next step's mean.
+     */
+    double contact_reaction = 0;
     /** Only with a probe point: the velocity there. */
     Tensor<1, dim> probe_velocity;
   };

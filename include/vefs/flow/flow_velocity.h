@@ -134,7 +134,13 @@ namespace vefs
      */
     bool trace_velocity_in_fields = false;
     /** With the energy budget: the energy at the end of the last step. */
-    double           last_energy = 0;
+    double last_energy = 0;
+    /**
+     * The contact walls' reaction in the solve that found the initial
+     * acceleration of a new run: the force at t = 0 for the first step's
+     * mean (measure()).
+     */
+    double           initial_contact_reaction = 0;
     StokesStep<dim> &flow;
     TimerOutput     &timer;
     /** Solves per step with contact walls, at the most. */
