@@ -9,6 +9,8 @@
 //    fresh Parameters gives the same print (every entry bound both ways).
 //  - Every moved entry set at its old place lands in its new member, with
 //    one warning naming both places; old and new place together are refused.
+//  - 'automatic' entries resolve by the material's regime or, for the
+//    stress interpolation, by the velocity interpolation.
 
 #include "unit_test.h"
 
@@ -253,5 +255,37 @@ main()
       {
         out << "strain bound -1: " << error.what() << '\n';
       }
+  }
+
+  {
+    // 'Stress interpolation = automatic' follows 'Velocity interpolation':
+    // limited cubic where the velocity is (limited) cubic, linear otherwise;
+    // an explicit value stays.
+    const auto stress_interpolation = [](const std::string &transport) {
+      write("stress_interpolation.prm",
+            "subsection Transport\n" + transport + "end\n");
+      vefs::Parameters parameters;
+      ParameterHandler prm;
+      parameters.declare(prm);
+      vefs::read_parameter_file(prm,
+                                "stress_interpolation.prm",
+                                vefs::Parameters::moved_entries);
+      parameters.check();
+      return std::string(parameters.transport.cubic_stress_interpolation()
+                           ? "limited cubic"
+                           : "linear");
+    };
+    for (const std::string velocity : {"linear", "cubic", "limited cubic"})
+      out << "stress interpolation automatic, velocity " << velocity << ": "
+          << stress_interpolation("  set Velocity interpolation = " + velocity +
+                                  "\n")
+          << '\n';
+    out << "stress interpolation linear, velocity limited cubic: "
+        << stress_interpolation("  set Velocity interpolation = limited "
+                                "cubic\n  set Stress interpolation = linear\n")
+        << '\n';
+    out << "stress interpolation limited cubic, velocity linear: "
+        << stress_interpolation("  set Stress interpolation = limited cubic\n")
+        << '\n';
   }
 }
