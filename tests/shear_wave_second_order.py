@@ -26,10 +26,8 @@ def main(output_dir):
     prm = read_parameters(output_dir)
     tau = parameter_float(prm, "Time/Time step")
     level = parameter_float(prm, "Mesh refinement/Maximum level")
-    lower = parameter_floats(prm, "Cavity/Lower corner")
-    upper = parameter_floats(prm, "Cavity/Upper corner")
     cells = parameter_floats(prm, "Cavity/Coarse subdivisions")[1]
-    h = (upper[1] - lower[1]) / cells / 2 ** level
+    h = r["L_y"] / cells / 2 ** level
     x = r["w"] * tau
     predicted = 2 * math.atan(x / 2) / x - 1 - (r["k"] * h) ** 2 / 12
     for line in format_report(r):

@@ -1,7 +1,8 @@
 """The events of a body that falls on a contact floor and bounces, read from
 a vefs statistics file: first contact, lowest centroid, lift-off (contact
 force back to zero), rebound apex, the floor's impulse over the first
-contact against Newton's second law for the centroid, energy left.
+contact and in each of its steps against Newton's second law for the
+centroid, energy left.
 
 Used by tests/bouncing_ball_2d_stiff.py and benchmarks/bouncing_ball_study.py.
 """
@@ -42,20 +43,25 @@ def bounce_events(directory):
     if lift is None:
         return e
     apex = max(range(lowest, n), key=lambda i: y[i])
-    v_before, v_after = velocity(first - 1), velocity(lift)
+    v_before = velocity(first - 1)
+    contact = range(first, lift + 1)
+    # The liquid's momentum is m times its mean velocity: exact, where
+    # differences of the centroid are not. Per step: the floor's impulse
+    # against m (dv + g tau).
+    step_impulse = [F[i] * (t[i] - t[i - 1]) for i in contact]
+    step_momentum = [m * (v_mean[i] - v_mean[i - 1] + G * (t[i] - t[i - 1]))
+                     for i in contact]
     e.update({
         "lift_off_time": t[lift],
         "apex": y[apex],
         "apex_time": t[apex],
         "velocity_before_contact": v_before,
-        "largest_upward_velocity": max(velocity(i)
-                                       for i in range(first, lift + 1)),
-        "impulse": sum(F[i] * (t[i] - t[i - 1])
-                       for i in range(first, lift + 1)),
-        # The liquid's momentum is m times its mean velocity: exact, where
-        # differences of the centroid are not.
-        "momentum_change": m * (v_mean[lift] - v_mean[first - 1])
-        + m * G * (t[lift] - t[first - 1]),
+        "largest_upward_velocity": max(velocity(i) for i in contact),
+        "impulse": sum(step_impulse),
+        "momentum_change": sum(step_momentum),
+        "worst_step_imbalance": max(abs(a - b) for a, b in
+                                    zip(step_impulse, step_momentum))
+        / max(step_impulse),
         "energy_left": energy[lift] / energy[0],
     })
     return e
