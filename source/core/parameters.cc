@@ -152,7 +152,8 @@ namespace vefs
     // settings of the elastic scenes: doc/bouncing_ball.md).
     const Regime regime = material.regime();
     stress.resolve(regime);
-    transport.resolve();
+    mesh.resolve();
+    transport.resolve(mesh.band_predicted());
     flow.resolve(regime);
     if (time.automatic_max_strain)
       time.max_strain_per_step = regime == Regime::elastic_solid ? 0.25 : 0;

@@ -10,7 +10,10 @@
 //  - Every moved entry set at its old place lands in its new member, with
 //    one warning naming both places; old and new place together are refused.
 //  - 'automatic' entries resolve by the material's regime or, for the
-//    stress interpolation, by the velocity interpolation.
+//    stress interpolation, by the velocity interpolation; the remap
+//    distance by the level set interpolation, a prescribed velocity and
+//    the band placement; the band width and miss tolerance by the band
+//    placement.
 
 #include "unit_test.h"
 
@@ -287,5 +290,73 @@ main()
     out << "stress interpolation limited cubic, velocity linear: "
         << stress_interpolation("  set Stress interpolation = limited cubic\n")
         << '\n';
+  }
+
+  {
+    // 'Remap distance = automatic': 10 for the gradient augmented level set
+    // carried by a prescribed velocity, unless the band is predicted; 0
+    // otherwise. 'Band width' and 'Band miss tolerance' = automatic: 2 and
+    // 0.001 with 'predicted, one change', 2 and 0 with 'predicted', 4 and 0
+    // with 'widened'. Explicit values stay.
+    const auto resolved = [](const std::string &transport,
+                             const std::string &mesh) {
+      write("remap.prm",
+            "set Dimension = 2\nsubsection Transport\n" + transport +
+              "end\nsubsection Mesh refinement\n" + mesh + "end\n");
+      vefs::Parameters parameters;
+      ParameterHandler prm;
+      parameters.declare(prm);
+      vefs::read_parameter_file(prm,
+                                "remap.prm",
+                                vefs::Parameters::moved_entries);
+      parameters.check();
+      std::ostringstream text;
+      text << "remap distance " << parameters.transport.remap_distance
+           << ", band width " << parameters.mesh.band_width
+           << ", miss tolerance " << parameters.mesh.band_miss_tolerance;
+      return text.str();
+    };
+    const std::string gradient_augmented =
+      "  set Level set interpolation = gradient augmented\n";
+    const std::string prescribed = "  set Prescribed velocity = 1; 0\n";
+    out << "automatic, flow, linear: " << resolved("", "") << '\n';
+    out << "automatic, flow, gradient augmented: "
+        << resolved(gradient_augmented, "") << '\n';
+    out << "automatic, prescribed velocity, linear: "
+        << resolved(prescribed, "") << '\n';
+    out << "automatic, prescribed velocity, gradient augmented: "
+        << resolved(prescribed + gradient_augmented, "") << '\n';
+    out << "the same, band predicted: "
+        << resolved(prescribed + gradient_augmented,
+                    "  set Band placement = predicted\n")
+        << '\n';
+    out << "automatic, band predicted, one change: "
+        << resolved("", "  set Band placement = predicted, one change\n")
+        << '\n';
+    out << "explicit values: "
+        << resolved(prescribed + gradient_augmented +
+                      "  set Remap distance = 3\n",
+                    "  set Band width = 5\n")
+        << '\n';
+    out << "explicit values, one change: "
+        << resolved("",
+                    "  set Band placement = predicted, one change\n"
+                    "  set Band width = 3\n"
+                    "  set Band miss tolerance = 0.01\n")
+        << '\n';
+    for (const std::string &entry :
+         {std::string("  set Band miss tolerance = 2\n"),
+          std::string("  set Band width = 0.5\n")})
+      try
+        {
+          resolved("",
+                   "  set Band placement = predicted, one change\n" + entry);
+          out << entry.substr(6, entry.size() - 7) << ": NOT refused\n";
+        }
+      catch (const vefs::InputError &error)
+        {
+          out << entry.substr(6, entry.size() - 7) << ": " << error.what()
+              << '\n';
+        }
   }
 }

@@ -31,6 +31,16 @@ namespace vefs
     void
     declare(dealii::ParameterHandler &prm);
 
+    /**
+     * 'automatic' band width and miss tolerance take the values measured
+     * for the placement (doc/bouncing_ball_3d_study.md, "Settings
+     * compared"): a band of 2 finest cells and a miss tolerance of 0.001
+     * for the predicted placements, 4 cells (widened by the CFL number) and
+     * 0 otherwise.
+     */
+    void
+    resolve();
+
     /** Throws InputError for levels out of order or a stray tolerance. */
     void
     check() const;
@@ -56,17 +66,19 @@ namespace vefs
       return band_placement == BandPlacement::predicted_one_change;
     }
 
-    unsigned int  min_level      = 2;
-    unsigned int  bulk_level     = 4;
-    unsigned int  max_level      = 6;
-    double        band_width     = 4;
-    BandPlacement band_placement = BandPlacement::widened;
+    unsigned int  min_level            = 2;
+    unsigned int  bulk_level           = 4;
+    unsigned int  max_level            = 6;
+    double        band_width           = 4;
+    bool          automatic_band_width = true;
+    BandPlacement band_placement       = BandPlacement::widened;
     /**
      * The fraction of the surface's cells that may be left coarser than the
      * finest level after the advection before the mesh changes again then
      * ('Band miss tolerance').
      */
-    double band_miss_tolerance = 0;
+    double band_miss_tolerance           = 0;
+    bool   automatic_band_miss_tolerance = true;
   };
 
   /** Material id of cells with liquid, for the weighted partitioning. */

@@ -50,9 +50,10 @@ namespace vefs
       VelocityInterpolation::linear;
     StressInterpolation stress_interpolation = StressInterpolation::automatic;
     /** Finest cells the surface moves between remaps; 0: every step. */
-    double       remap_distance        = 0;
-    unsigned int redistancing_interval = 1;
-    bool         volume_correction     = true;
+    double       remap_distance           = 0;
+    bool         automatic_remap_distance = true;
+    unsigned int redistancing_interval    = 1;
+    bool         volume_correction        = true;
 
     std::string prescribed_velocity   = "";
     std::string exact_final_level_set = "";
@@ -61,9 +62,13 @@ namespace vefs
      * 'automatic' stress interpolation becomes limited cubic where the
      * velocity is interpolated by (limited) cubic, linear otherwise: an
      * elastic wave carries its energy in both fields (doc/bouncing_ball.md).
+     * An 'automatic' remap distance becomes 10 for the gradient augmented
+     * level set carried by a prescribed velocity (unless @p band_predicted:
+     * that placement adapts the mesh at every step), 0 otherwise
+     * (doc/transport.md).
      */
     void
-    resolve();
+    resolve(const bool band_predicted);
 
     /** The stress at the feet by limited cubic (after resolve()). */
     bool
