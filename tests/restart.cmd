@@ -1,4 +1,5 @@
-# Checkpoint and restart. The scene restart.prm runs once without a stop;
+# Checkpoint and restart. The scene restart.prm (or RESTART_PRM, if set)
+# runs once without a stop;
 # again with 'Checkpoint/Stop after steps = 12', so that it stops at steps
 # 12 and 24 and is resumed twice with `vefs --resume`; and again stopped by
 # SIGTERM part-way (exit status 128 + 15) and resumed. The resumed runs
@@ -7,7 +8,7 @@
 # same visualization series. The resumed parts run with RESUME_MPIRUN if it
 # is set (restart_fewer_ranks.cmd: 2 ranks, then 1), else with MPIRUN.
 set -u
-source_prm=${TEST_SOURCE_DIR}/restart.prm
+source_prm=${TEST_SOURCE_DIR}/${RESTART_PRM:-restart.prm}
 resume_launcher=${RESUME_MPIRUN-${MPIRUN:-}}
 scene() { # output directory, steps before the stop
   sed -e "s|^set Output directory.*|set Output directory = $1|" \

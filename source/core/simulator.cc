@@ -332,6 +332,7 @@ namespace vefs
     visualization.resume(state.visualization_series);
     statistics_file.resume(state.statistics.step);
     statistics = state.statistics;
+    flow.resume_contact(state.contact_state);
     time.resume(statistics.step, statistics.time, statistics.tau);
     pcout << "resumed at step " << statistics.step
           << " (t = " << statistics.time << ") from " << checkpoint << "/"
@@ -388,7 +389,8 @@ namespace vefs
                                 surface->initial_volume(),
                                 surface->expected_volume(),
                                 last_output_step,
-                                visualization.get_series()};
+                                visualization.get_series(),
+                                flow.contact_state()};
       return write_checkpoint(parameters.output_directory,
                               parameters_text,
                               fields,

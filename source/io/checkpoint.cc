@@ -432,6 +432,10 @@ namespace vefs
                << '\n';
           for (const auto &[time, name] : state.visualization_series)
             text << "output " << exact(time) << ' ' << name << '\n';
+          text << "contact_state";
+          for (const double value : state.contact_state)
+            text << ' ' << exact(value);
+          text << '\n';
           const auto remap = history.scalars();
           text << "level_set_history " << remap.has_base << ' '
                << exact(remap.moved);
@@ -519,6 +523,12 @@ namespace vefs
         if (const auto found = entries.find("contact_reaction");
             found != entries.end() && !found->second.empty())
           s.contact_reaction = to_double(found->second[0]);
+        // Checkpoints written before it have no contact state (their runs
+        // then start the contact set afresh).
+        if (const auto found = entries.find("contact_state");
+            found != entries.end())
+          for (const std::string &value : found->second)
+            state.contact_state.push_back(to_double(value));
         s.wall_time            = to_double(value("wall_time"));
         state.initial_volume   = to_double(value("initial_volume"));
         state.expected_volume  = to_double(value("expected_volume"));

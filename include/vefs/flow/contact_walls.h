@@ -108,6 +108,18 @@ namespace vefs
            const FlowElements<dim>         &elements,
            const AffineConstraints<double> &interpolation);
 
+    /**
+     * Where the next step's contact set starts: the nodes released at the
+     * end of this one, gathered from all ranks for a checkpoint (dim
+     * coordinates a node). Collective.
+     */
+    std::vector<double>
+    saved_state() const;
+
+    /** Start the next step's set from @p state, as saved_state() gave it. */
+    void
+    resume(const std::vector<double> &state, const MPI_Comm comm);
+
     /** Normal force of the walls on the liquid (N, N/m in 2D), >= 0. */
     double force = 0;
     /** Length (2D) or area (3D) of the wall in contact with the liquid. */

@@ -104,6 +104,20 @@ namespace vefs
       return contact.force;
     }
 
+    /** ContactWalls::saved_state(), for a checkpoint. Collective. */
+    std::vector<double>
+    contact_state() const
+    {
+      return contact.saved_state();
+    }
+
+    /** Start the next step's contact set from a checkpoint's state. */
+    void
+    resume_contact(const std::vector<double> &state)
+    {
+      contact.resume(state, comm);
+    }
+
     /** Length (2D) or area (3D) of contact-wall in contact with liquid. */
     double
     contact_measure() const
