@@ -8,7 +8,9 @@
 // every one of the right block pulls away (is released, and its velocity
 // then leaves the wall, u_y > 0). The contact length is then exactly the
 // floor faces of the left block's liquid cells; the floor pushes the
-// left block up (force > 0). 1 and 2 ranks.
+// left block up (force > 0). The set's state for a checkpoint
+// (StokesStep::contact_state()) holds the released nodes, from which a
+// resumed step starts settled. 1 and 2 ranks.
 // Tolerance: |u_y| below 1e-6 in contact (solver tolerance 1e-10 on a
 // velocity of order 1, the contact rows are identities), u_y above 0.1
 // where released.
@@ -155,6 +157,31 @@ namespace
                            1e-12);
     out << "contact force positive: "
         << (flow.contact_force() > 0 ? "yes" : "no") << '\n';
+
+    // The state a checkpoint keeps: the released nodes, those of the right
+    // block's wet floor. A flow step resumed from it starts with the settled
+    // set (its first update changes nothing); a fresh one starts with every
+    // wet node in contact and must release the right block's.
+    const std::vector<double> state     = flow.contact_state();
+    bool                      all_right = true;
+    for (std::size_t i = 0; i < state.size(); i += 2)
+      all_right = all_right && state[i] > 0 && state[i + 1] == 0;
+    out << "saved state: " << state.size() / 2
+        << " released nodes, all on the right block's floor: "
+        << (all_right ? "yes" : "no") << '\n';
+    const auto first_update_changes = [&](const bool resumed) {
+      vefs::StokesStep<2> next(parameters.flow_step(), rheology, triangulation);
+      if (resumed)
+        next.resume_contact(state);
+      next.setup(domain, tau);
+      next.assemble(fields, tau);
+      next.solve(parameters.solver.solver_tolerance);
+      return next.update_contact(fields, tau);
+    };
+    out << "resumed from it: first update changes the set: "
+        << (first_update_changes(true) ? "yes" : "no") << '\n';
+    out << "not resumed: first update changes the set: "
+        << (first_update_changes(false) ? "yes" : "no") << '\n';
   }
 } // namespace
 
