@@ -173,12 +173,7 @@ namespace vefs
                         level_set_expression,
                         "muParser expression in x, y, (z): the liquid is "
                         "where it is negative. It should be close to a "
-                        "signed distance (m) near its zero level, and "
-                        "smooth: with the gradient augmented transport and "
-                        "no redistancing, a kink (the center of "
-                        "sqrt(r^2) - R) that the flow carries near the "
-                        "surface costs accuracy; (r^2 - R^2) / (2 R) has "
-                        "the same zero level and none.",
+                        "signed distance (m) near its zero level.",
                         Patterns::Anything());
       prm.add_parameter("Velocity",
                         initial_velocity,
