@@ -119,38 +119,20 @@ namespace vefs
   }
 
   template <int dim>
-  std::vector<double>
+  std::vector<Point<dim>>
   ContactWalls<dim>::saved_state() const
   {
-    std::vector<double> state;
     if (walls.empty())
-      return state;
-    const MPI_Comm comm = in_contact.get_mpi_communicator();
-    for (const Point<dim> &node : concatenated_over_ranks(comm, released_nodes))
-      for (unsigned int d = 0; d < dim; ++d)
-        state.push_back(node[d]);
-    return state;
+      return {};
+    return concatenated_over_ranks(in_contact.get_mpi_communicator(),
+                                   released_nodes);
   }
 
   template <int dim>
   void
-  ContactWalls<dim>::resume(const std::vector<double> &state,
-                            const MPI_Comm             comm)
+  ContactWalls<dim>::resume(const std::vector<Point<dim>> &released)
   {
-    AssertThrow(state.size() % dim == 0,
-                ExcMessage("a contact wall state of dim numbers a node"));
-    released_nodes.clear();
-    // Every rank holds the whole list; reset() gathers from all ranks, so
-    // one keeps it.
-    if (Utilities::MPI::this_mpi_process(comm) != 0)
-      return;
-    for (std::size_t i = 0; i < state.size(); i += dim)
-      {
-        Point<dim> node;
-        for (unsigned int d = 0; d < dim; ++d)
-          node[d] = state[i + d];
-        released_nodes.push_back(node);
-      }
+    released_nodes = released;
   }
 
   template <int dim>

@@ -433,8 +433,9 @@ namespace vefs
           for (const auto &[time, name] : state.visualization_series)
             text << "output " << exact(time) << ' ' << name << '\n';
           text << "contact_state";
-          for (const double value : state.contact_state)
-            text << ' ' << exact(value);
+          for (const Point<dim> &node : state.contact_state)
+            for (unsigned int d = 0; d < dim; ++d)
+              text << ' ' << exact(node[d]);
           text << '\n';
           const auto remap = history.scalars();
           text << "level_set_history " << remap.has_base << ' '
@@ -527,8 +528,19 @@ namespace vefs
         // then start the contact set afresh).
         if (const auto found = entries.find("contact_state");
             found != entries.end())
-          for (const std::string &value : found->second)
-            state.contact_state.push_back(to_double(value));
+          {
+            const auto &values = found->second;
+            if (values.size() % dim != 0)
+              throw std::runtime_error(
+                "its contact_state does not hold whole points");
+            for (std::size_t i = 0; i < values.size(); i += dim)
+              {
+                Point<dim> node;
+                for (unsigned int d = 0; d < dim; ++d)
+                  node[d] = to_double(values[i + d]);
+                state.contact_state.push_back(node);
+              }
+          }
         s.wall_time            = to_double(value("wall_time"));
         state.initial_volume   = to_double(value("initial_volume"));
         state.expected_volume  = to_double(value("expected_volume"));

@@ -162,11 +162,11 @@ namespace
     // block's wet floor. A flow step resumed from it starts with the settled
     // set (its first update changes nothing); a fresh one starts with every
     // wet node in contact and must release the right block's.
-    const std::vector<double> state     = flow.contact_state();
-    bool                      all_right = true;
-    for (std::size_t i = 0; i < state.size(); i += 2)
-      all_right = all_right && state[i] > 0 && state[i + 1] == 0;
-    out << "saved state: " << state.size() / 2
+    const std::vector<Point<2>> state     = flow.contact_state();
+    bool                        all_right = true;
+    for (const Point<2> &node : state)
+      all_right = all_right && node[0] > 0 && node[1] == 0;
+    out << "saved state: " << state.size()
         << " released nodes, all on the right block's floor: "
         << (all_right ? "yes" : "no") << '\n';
     const auto first_update_changes = [&](const bool resumed) {

@@ -110,15 +110,18 @@ namespace vefs
 
     /**
      * Where the next step's contact set starts: the nodes released at the
-     * end of this one, gathered from all ranks for a checkpoint (dim
-     * coordinates a node). Collective.
+     * end of this one, gathered from all ranks for a checkpoint.
+     * Collective.
      */
-    std::vector<double>
+    std::vector<Point<dim>>
     saved_state() const;
 
-    /** Start the next step's set from @p state, as saved_state() gave it. */
+    /**
+     * Start the next step's set from @p released, as saved_state() gave it
+     * (on every rank: reset() merges the ranks' lists by position).
+     */
     void
-    resume(const std::vector<double> &state, const MPI_Comm comm);
+    resume(const std::vector<Point<dim>> &released);
 
     /** Normal force of the walls on the liquid (N, N/m in 2D), >= 0. */
     double force = 0;

@@ -105,7 +105,7 @@ namespace vefs
     }
 
     /** ContactWalls::saved_state(), for a checkpoint. Collective. */
-    std::vector<double>
+    std::vector<Point<dim>>
     contact_state() const
     {
       return contact.saved_state();
@@ -113,9 +113,9 @@ namespace vefs
 
     /** Start the next step's contact set from a checkpoint's state. */
     void
-    resume_contact(const std::vector<double> &state)
+    resume_contact(const std::vector<Point<dim>> &released)
     {
-      contact.resume(state, comm);
+      contact.resume(released);
     }
 
     /** Length (2D) or area (3D) of contact-wall in contact with liquid. */

@@ -32,7 +32,7 @@ namespace vefs
     /** The solution.pvd series: (time, .pvtu file). */
     std::vector<std::pair<double, std::string>> visualization_series;
     /** ContactWalls::saved_state(): where the next contact set starts. */
-    std::vector<double> contact_state;
+    std::vector<Point<dim>> contact_state;
   };
 
   /** Names of the checkpoint directories inside an output directory. */
