@@ -54,7 +54,8 @@ namespace vefs
     localize_constraints();
 
     // FE_Q(1)^n_components: the i-th degree of freedom of a vertex belongs to
-    // component i, so one vertex carries all fields of one node.
+    // component i, so one vertex carries all fields of one node; deal.II
+    // numbers them in a row.
     owned_nodes.clear();
     std::vector<bool> seen(owned_dofs.n_elements(), false);
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -70,11 +71,12 @@ namespace vefs
               continue;
             seen[local] = true;
             Node node;
-            node.point = cell->vertex(v);
-            // Slots of absent components stay invalid, not undefined.
-            node.dofs.fill(numbers::invalid_dof_index);
+            node.point      = cell->vertex(v);
+            node.dofs.first = first;
             for (unsigned int c = 0; c < n_components; ++c)
-              node.dofs[c] = cell->vertex_dof_index(v, c);
+              AssertThrow(cell->vertex_dof_index(v, c) == first + c,
+                          ExcMessage("The components of a vertex are not "
+                                     "numbered consecutively."));
             owned_nodes.push_back(node);
           }
   }

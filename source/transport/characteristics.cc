@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <boost/container/small_vector.hpp>
 #include <vefs/transport/characteristics.h>
 #include <vefs/transport/field_hermite.h>
 #include <vefs/transport/nodal_gradients.h>
@@ -10,15 +11,61 @@ namespace vefs
   {
     /**
      * Values of all components of the fields at one point, followed by
-     * extras (from index first_extra): the velocity gradient du_i/dx_j at
-     * first_extra + dim i + j, or the level set gradient.
+     * extras: the velocity gradient du_i/dx_j at extra(dim i + j), or the
+     * level set gradient at extra(d). Sized at run time (the fields'
+     * components are), on the stack for the fields without dumbbells.
      */
     template <int dim>
-    using FieldValues =
-      Tensor<1, TransportedFields<dim>::max_components + dim * dim, double>;
+    class FieldValues
+    {
+    public:
+      static constexpr unsigned int n_extras = dim * dim;
 
-    template <int dim>
-    constexpr unsigned int first_extra = TransportedFields<dim>::max_components;
+      FieldValues() = default;
+
+      explicit FieldValues(const unsigned int n_components)
+        : values(n_components + n_extras, 0.)
+        , first_extra(n_components)
+      {
+      }
+
+      double &
+      operator[](const unsigned int c)
+      {
+        return values[c];
+      }
+
+      double
+      operator[](const unsigned int c) const
+      {
+        return values[c];
+      }
+
+      double &
+      extra(const unsigned int k)
+      {
+        return values[first_extra + k];
+      }
+
+      double
+      extra(const unsigned int k) const
+      {
+        return values[first_extra + k];
+      }
+
+      /** Components and extras. */
+      unsigned int
+      size() const
+      {
+        return values.size();
+      }
+
+    private:
+      boost::container::
+        small_vector<double, TransportedFields<dim>::max_components + n_extras>
+                   values;
+      unsigned int first_extra = 0;
+    };
 
     /** How values_in_cell interpolates, and which extras it adds. */
     template <int dim>
@@ -65,7 +112,7 @@ namespace vefs
     {
       constexpr unsigned int level_set =
         TransportedFields<dim>::level_set_component;
-      FieldValues<dim> values;
+      FieldValues<dim> values(fields.n_components);
       const auto       dof_cell = fields.cell_of(cell);
       if (const double *lattice = how.coarsened_detail
                                     ? how.coarsened_detail->lattice(cell)
@@ -85,7 +132,7 @@ namespace vefs
             const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = 0; j < dim; ++j)
-                values[first_extra<dim> + dim * i + j] +=
+                values.extra(dim * i + j) +=
                   weight *
                   (*how.velocity_gradient)[j](dof_cell->vertex_dof_index(v, i));
           }
@@ -137,7 +184,7 @@ namespace vefs
                                how.level_set_gradient ? &gradient : nullptr);
           if (how.level_set_gradient)
             for (unsigned int d = 0; d < dim; ++d)
-              values[first_extra<dim> + d] = gradient[d];
+              values.extra(d) = gradient[d];
         }
       return values;
     }
@@ -172,8 +219,8 @@ namespace vefs
             asked[owners[i]].push_back(points[i][d]);
         }
 
-      constexpr unsigned int n_values =
-        FieldValues<dim>::n_independent_components;
+      const unsigned int n_values =
+        FieldValues<dim>(fields.n_components).size();
       std::map<unsigned int, std::vector<double>> answers;
       for (const auto &[rank, coordinates] :
            Utilities::MPI::some_to_some(comm, asked))
@@ -199,7 +246,9 @@ namespace vefs
             }
         }
 
-      std::vector<FieldValues<dim>> result(points.size());
+      std::vector<FieldValues<dim>> result(points.size(),
+                                           FieldValues<dim>(
+                                             fields.n_components));
       for (const auto &[rank, values] :
            Utilities::MPI::some_to_some(comm, answers))
         {
@@ -311,8 +360,7 @@ namespace vefs
                 {
                   k[i][a] = at_stage_points[i][a];
                   for (unsigned int b = 0; b < dim; ++b)
-                    G[a][b] =
-                      at_stage_points[i][first_extra<dim> + dim * a + b];
+                    G[a][b] = at_stage_points[i].extra(dim * a + b);
                 }
               dk[i] = G * (identity - fractions[stage] * tau * dk[i]);
               feet[i] -= weights[stage] * tau / 6 * k[i];
@@ -477,7 +525,7 @@ namespace vefs
           const Tensor<2, dim> &J = jacobians[i];
           Tensor<1, dim>        old_gradient;
           for (unsigned int d = 0; d < dim; ++d)
-            old_gradient[d] = at_feet[i][first_extra<dim> + d];
+            old_gradient[d] = at_feet[i].extra(d);
           level_set_gradient.set(nodes[i], old_gradient * J);
         }
     fields.finalize();
@@ -506,7 +554,7 @@ namespace vefs
         {
           k[i][a] = at_points[i][a];
           for (unsigned int b = 0; b < dim; ++b)
-            dk[i][a][b] = at_points[i][first_extra<dim> + dim * a + b];
+            dk[i][a][b] = at_points[i].extra(dim * a + b);
         }
     std::vector<Point<dim>>     feet;
     std::vector<Tensor<2, dim>> step_jacobians;
@@ -590,7 +638,7 @@ namespace vefs
           values[i][TransportedFields<dim>::level_set_component];
         if (gradient_augmented)
           for (unsigned int d = 0; d < dim; ++d)
-            result[i].second[d] = values[i][first_extra<dim> + d];
+            result[i].second[d] = values[i].extra(d);
       }
     return result;
   }

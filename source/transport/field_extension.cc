@@ -122,7 +122,8 @@ namespace vefs
     VectorType sum, count;
     fields.initialize_vector(sum);
     fields.initialize_vector(count);
-    std::vector<bool> in_front(graph.n_cells(), false);
+    std::vector<bool>   in_front(graph.n_cells(), false);
+    std::vector<double> average(fields.n_components);
     for (unsigned int layer = 0; layer < n_layers; ++layer)
       {
         sum   = 0;
@@ -131,8 +132,9 @@ namespace vefs
         for (const unsigned int cell : front)
           {
             const unsigned int *vertices = &graph.cell_vertices[cell * n_v];
-            Tensor<1, TransportedFields<dim>::max_components> average;
-            unsigned int                                      n_known = 0;
+            for (const unsigned int c : components)
+              average[c] = 0;
+            unsigned int n_known = 0;
             for (unsigned int v = 0; v < n_v; ++v)
               if (is_known(vertices[v]))
                 {
@@ -140,7 +142,8 @@ namespace vefs
                   for (const unsigned int c : components)
                     average[c] += fields.local_value(graph.dof(vertices[v], c));
                 }
-            average /= n_known;
+            for (const unsigned int c : components)
+              average[c] /= n_known;
             for (unsigned int v = 0; v < n_v; ++v)
               if (!is_known(vertices[v]))
                 {

@@ -154,7 +154,7 @@ namespace
     for (unsigned int i = 0; n_wrong_nodes == 0 && i < fields.nodes().size();
          ++i)
       if (fields.nodes()[i].point != fresh.nodes()[i].point ||
-          fields.nodes()[i].dofs != fresh.nodes()[i].dofs)
+          fields.nodes()[i].dofs.first != fresh.nodes()[i].dofs.first)
         ++n_wrong_nodes;
     out << name << "ranks whose nodes differ: "
         << Utilities::MPI::sum(n_wrong_nodes, comm) << '\n';

@@ -43,11 +43,27 @@ namespace vefs
       dim + 1 + n_stress_components + dim;
     using VectorType = LinearAlgebra::distributed::Vector<double>;
 
+    /**
+     * The degrees of freedom of one vertex: FE_Q(1)^n_components numbers
+     * the components of a vertex consecutively (setup_dofs() checks it), so
+     * the first index names them all, however many components there are.
+     */
+    struct VertexDofs
+    {
+      types::global_dof_index first = numbers::invalid_dof_index;
+
+      types::global_dof_index
+      operator[](const unsigned int component) const
+      {
+        return first + component;
+      }
+    };
+
     /** A locally owned mesh vertex that carries its own degrees of freedom. */
     struct Node
     {
-      Point<dim>                                          point;
-      std::array<types::global_dof_index, max_components> dofs;
+      Point<dim> point;
+      VertexDofs dofs;
     };
 
     /**
