@@ -148,53 +148,27 @@ namespace vefs
       fields.finalize();
     }
 
-    /**
-     * The traceless part L - (tr L / d) I of the velocity gradient. The
-     * liquid is incompressible, but the discrete velocity is not exactly
-     * divergence free (stabilized equal-order elements, cut cells), and a
-     * divergence that keeps its sign at one place, as at the corner of a
-     * no-slip wall and the free surface, inflates c there by
-     * exp(2 tau div u) every step: an isotropic stress, and elastic energy
-     * from nowhere (2D beam: 4.5 -> 85 J/m while it lay at rest). Without
-     * the trace the exponential update keeps det c exactly.
-     */
-    template <int dim>
-    Tensor<2, dim>
-    traceless(const Tensor<2, dim> &L)
-    {
-      return L - (trace(L) / dim) * unit_symmetric_tensor<dim>();
-    }
   } // namespace
 
   template <int dim>
-  StressUpdateReport
-  update_stress(TransportedFields<dim>                            &fields,
-                const typename TransportedFields<dim>::VectorType &velocity,
-                const LiquidDomain<dim>                           &domain,
-                const Rheology<dim>                               &rheology,
-                const double                                       tau,
-                const bool outside_extended)
+  void
+  for_each_liquid_vertex(
+    const TransportedFields<dim>                      &fields,
+    const typename TransportedFields<dim>::VectorType &velocity,
+    const LiquidDomain<dim>                           &domain,
+    const std::function<
+      void(const typename DoFHandler<dim>::active_cell_iterator &cell,
+           const unsigned int                                    v,
+           const Tensor<2, dim> &grad_u)> &carry)
   {
-    using VectorType = typename TransportedFields<dim>::VectorType;
-    constexpr unsigned int first =
-      TransportedFields<dim>::first_stress_component;
-    constexpr unsigned int n_stress =
-      TransportedFields<dim>::n_stress_components;
-
-    // Sum over the liquid cells around each node of volume * new stress;
-    // the volume itself goes into the node's first component.
-    VectorType sum;
-    fields.initialize_vector(sum);
     // Quadrature points at the vertices, in the vertex order of the cell.
-    FEValues<dim>                    vertex_values(fields.mapping,
-                                fields.fe,
-                                QTrapezoid<dim>(),
-                                update_gradients);
-    const FEValuesExtractors::Vector velocity_extractor(0);
+    // In closed form: an FEValues of the fields' element costs the square
+    // of their number of components to build (the dumbbells' fields).
+    const QTrapezoid<dim>       at_vertices;
+    BoxCellValues<dim>          vertex_values;
     std::vector<Tensor<2, dim>> grad_u(GeometryInfo<dim>::vertices_per_cell);
     LiquidValues<dim>           liquid_values(domain);
     std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
-    StressUpdateReport                                               report;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
@@ -229,28 +203,63 @@ namespace vefs
             }
           else
             {
-              vertex_values.reinit(cell);
-              vertex_values[velocity_extractor].get_function_gradients(velocity,
-                                                                       grad_u);
+              vertex_values.reinit(cell, at_vertices);
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  grad_u[v] = 0;
+                  for (const unsigned int w : cell->vertex_indices())
+                    for (unsigned int d = 0; d < dim; ++d)
+                      grad_u[v][d] += velocity(cell->vertex_dof_index(w, d)) *
+                                      vertex_values.gradient[v][w];
+                }
             }
-          const double weight = cell->measure();
           for (const unsigned int v : cell->vertex_indices())
-            {
-              const SymmetricTensor<2, dim> advected =
-                fields.stress_at(cell, v);
-              const Tensor<2, dim>          L = traceless(grad_u[v]);
-              const SymmetricTensor<2, dim> updated =
-                rheology.updated_stress(advected, L, tau);
-              report.max_velocity_gradient =
-                std::max(report.max_velocity_gradient, grad_u[v].norm());
-              if (rheology.is_strain_limited(L, tau))
-                ++report.strain_limited_points;
-              sum(cell->vertex_dof_index(v, 0)) += weight;
-              for (unsigned int i = 0; i < n_stress; ++i)
-                sum(cell->vertex_dof_index(v, first + i)) +=
-                  weight * updated.access_raw_entry(i);
-            }
+            carry(cell, v, grad_u[v]);
         }
+  }
+
+  template <int dim>
+  StressUpdateReport
+  update_stress(TransportedFields<dim>                            &fields,
+                const typename TransportedFields<dim>::VectorType &velocity,
+                const LiquidDomain<dim>                           &domain,
+                const Rheology<dim>                               &rheology,
+                const double                                       tau,
+                const bool outside_extended)
+  {
+    using VectorType = typename TransportedFields<dim>::VectorType;
+    constexpr unsigned int first =
+      TransportedFields<dim>::first_stress_component;
+    constexpr unsigned int n_stress =
+      TransportedFields<dim>::n_stress_components;
+
+    // Sum over the liquid cells around each node of volume * new stress;
+    // the volume itself goes into the node's first component.
+    VectorType sum;
+    fields.initialize_vector(sum);
+    StressUpdateReport report;
+    for_each_liquid_vertex<dim>(fields,
+                                velocity,
+                                domain,
+                                [&](const auto           &cell,
+                                    const unsigned int    v,
+                                    const Tensor<2, dim> &grad_u) {
+                                  const SymmetricTensor<2, dim> advected =
+                                    fields.stress_at(cell, v);
+                                  const Tensor<2, dim> L = traceless(grad_u);
+                                  const SymmetricTensor<2, dim> updated =
+                                    rheology.updated_stress(advected, L, tau);
+                                  report.max_velocity_gradient =
+                                    std::max(report.max_velocity_gradient,
+                                             grad_u.norm());
+                                  if (rheology.is_strain_limited(L, tau))
+                                    ++report.strain_limited_points;
+                                  const double weight = cell->measure();
+                                  sum(cell->vertex_dof_index(v, 0)) += weight;
+                                  for (unsigned int i = 0; i < n_stress; ++i)
+                                    sum(cell->vertex_dof_index(v, first + i)) +=
+                                      weight * updated.access_raw_entry(i);
+                                });
     sum.compress(VectorOperation::add);
 
     for (const auto &node : fields.nodes())
@@ -346,6 +355,22 @@ namespace vefs
                    const Rheology<3> &,
                    const double,
                    const bool);
+  template void
+  for_each_liquid_vertex<2>(
+    const TransportedFields<2> &,
+    const TransportedFields<2>::VectorType &,
+    const LiquidDomain<2> &,
+    const std::function<void(const DoFHandler<2>::active_cell_iterator &,
+                             const unsigned int,
+                             const Tensor<2, 2> &)> &);
+  template void
+  for_each_liquid_vertex<3>(
+    const TransportedFields<3> &,
+    const TransportedFields<3>::VectorType &,
+    const LiquidDomain<3> &,
+    const std::function<void(const DoFHandler<3>::active_cell_iterator &,
+                             const unsigned int,
+                             const Tensor<2, 3> &)> &);
   template StressMeasure
   measure_stress<2>(const TransportedFields<2> &,
                     const LiquidDomain<2> &,
