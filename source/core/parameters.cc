@@ -151,14 +151,17 @@ namespace vefs
     // The entries whose best value depends on the material (the measured
     // settings of the elastic scenes: doc/bouncing_ball.md).
     const Regime regime = material.regime();
-    stress.resolve(regime);
+    stress.resolve(regime, material.has_dumbbells());
     mesh.resolve();
     transport.resolve(mesh.band_predicted());
-    flow.resolve(regime);
+    flow.resolve(regime, material.has_dumbbells());
     if (time.automatic_max_strain)
       time.max_strain_per_step = regime == Regime::elastic_solid ? 0.25 : 0;
+    // The second-order scheme's relaxation has no dumbbell counterpart
+    // (doc/dumbbells.md).
     time.resolve_scheme(regime != Regime::newtonian &&
-                          !transport.velocity_is_prescribed(),
+                          !transport.velocity_is_prescribed() &&
+                          !(material.has_dumbbells() && material.alpha != 0),
                         stress.stress_theta);
   }
 
@@ -232,6 +235,28 @@ namespace vefs
             "Time/Scheme",
             "a prescribed velocity is always traced at mid-step and solves "
             "no flow: leave it 'automatic' or 'first order'");
+    if (material.has_dumbbells())
+      {
+        // The dumbbells' update carries the fields by a linear map whose
+        // second moment is the exponential update's (doc/dumbbells.md).
+        require(stress.stress_update == StressUpdate::exponential,
+                "Stress/Stress update",
+                "dumbbells are carried by the exponential update: leave it "
+                "'automatic' or set 'exponential'");
+        require(flow.extends_outside_stress(),
+                "Flow/Outside stress of cut cells",
+                "'updated' bounds the stress outside the liquid, which the "
+                "dumbbells' fields cannot follow: leave it 'automatic' or "
+                "set 'extension'");
+        require(!time.second_order || material.alpha == 0,
+                "Time/Scheme",
+                "the second-order scheme's relaxation has no dumbbell "
+                "counterpart: use 'first order' for dumbbells with alpha = 1");
+        require(!transport.velocity_is_prescribed(),
+                "Material/Stress model",
+                "with a prescribed velocity no stress is solved: use "
+                "'macroscopic'");
+      }
     require(!postprocess.energy_budget || !transport.velocity_is_prescribed(),
             "Postprocess/Energy budget",
             "a prescribed velocity solves no flow and has no energy budget: "

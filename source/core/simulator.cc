@@ -7,6 +7,7 @@
 #include <vefs/flow/flow_velocity.h>
 #include <vefs/flow/prescribed_velocity.h>
 #include <vefs/io/checkpoint.h>
+#include <vefs/stress/dumbbells.h>
 #include <vefs/stress/stress.h>
 #include <vefs/transport/free_surface.h>
 #include <vefs/transport/initial_liquid.h>
@@ -91,7 +92,10 @@ namespace vefs
     , fields(triangulation,
              rheology.has_stress(),
              parameters.time.second_order,
-             parameters.cavity.periodic_directions())
+             parameters.cavity.periodic_directions(),
+             parameters.material.has_dumbbells()
+               ? parameters.material.dumbbell_fields
+               : 0)
     , flow(parameters.flow_step(), rheology, triangulation)
     , statistics_file(output.path(), comm, !checkpoint.empty())
     , visualization(parameters.output_directory)
@@ -221,11 +225,30 @@ namespace vefs
     velocity->add_columns(statistics_file);
     surface->add_columns(statistics_file);
     if (!parameters.postprocess.probe_point.empty())
-      for (unsigned int d = 0; d < dim; ++d)
-        statistics_file.add_column(std::string("probe_u_") + "xyz"[d],
-                                   [d](const auto &s) {
-                                     return s.probe_velocity[d];
-                                   });
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          statistics_file.add_column(std::string("probe_u_") + "xyz"[d],
+                                     [d](const auto &s) {
+                                       return s.probe_velocity[d];
+                                     });
+        if (rheology.has_stress())
+          for (unsigned int i = 0;
+               i < TransportedFields<dim>::n_stress_components;
+               ++i)
+            {
+              const auto index =
+                SymmetricTensor<2, dim>::unrolled_to_component_indices(i);
+              const std::string name =
+                std::string("probe_sigma_") + "xyz"[index[0]] + "xyz"[index[1]];
+              statistics_file.add_column(name, [i](const auto &s) {
+                return s.probe_stress.access_raw_entry(i);
+              });
+              if (parameters.material.has_dumbbells())
+                statistics_file.add_column(name + "_error", [i](const auto &s) {
+                  return s.probe_stress_error.access_raw_entry(i);
+                });
+            }
+      }
   }
 
   template <int dim>
@@ -304,6 +327,10 @@ namespace vefs
                              LevelSetInterpolation::linear))
           break;
       }
+    if (parameters.material.has_dumbbells())
+      set_initial_dumbbells(fields,
+                            rheology,
+                            parameters.material.dumbbell_seed);
     velocity->set_initial_velocity(fields);
     const double initial_volume = sharp_liquid_volume(fields, 0).volume;
     surface->start(fields, *level_set, initial_volume);
@@ -432,8 +459,11 @@ namespace vefs
           const Probe<dim> probe =
             probe_velocity(fields,
                            *locator,
-                           to_point<dim>(parameters.postprocess.probe_point));
-          statistics.probe_velocity = probe.velocity;
+                           to_point<dim>(parameters.postprocess.probe_point),
+                           rheology.shear_modulus());
+          statistics.probe_velocity     = probe.velocity;
+          statistics.probe_stress       = probe.stress;
+          statistics.probe_stress_error = probe.stress_error;
           // The columns are not zeroed outside: say once what they hold.
           if (!probe.in_liquid && !probe_outside_said)
             {

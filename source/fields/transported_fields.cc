@@ -12,13 +12,17 @@ namespace vefs
     const parallel::distributed::Triangulation<dim> &triangulation,
     const bool                                       with_stress,
     const bool                                       with_acceleration,
-    const std::vector<unsigned int>                 &periodic_directions)
+    const std::vector<unsigned int>                 &periodic_directions,
+    const unsigned int                               n_dumbbell_fields)
     : with_stress(with_stress)
     , with_acceleration(with_acceleration)
+    , n_dumbbell_fields(n_dumbbell_fields)
     , n_components(dim + 1 + (with_stress ? n_stress_components : 0) +
-                   (with_acceleration ? dim : 0))
+                   (with_acceleration ? dim : 0) + dim * n_dumbbell_fields)
     , first_acceleration_component(dim + 1 +
                                    (with_stress ? n_stress_components : 0))
+    , first_dumbbell_component(first_acceleration_component +
+                               (with_acceleration ? dim : 0))
     , fe(FE_Q<dim>(1), n_components)
     , dof_handler(triangulation)
     , periodic_directions(periodic_directions)

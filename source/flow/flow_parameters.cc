@@ -72,16 +72,17 @@ namespace vefs
         "gained 5.8 % of its energy in 10 s with updated, 0.33 % with "
         "extension (doc/bouncing_ball.md, doc/oscillating_beam.md). "
         "automatic: extension for an "
-        "elastic solid (alpha = 0), updated for a liquid.");
+        "elastic solid (alpha = 0) and for dumbbells, updated for a "
+        "liquid.");
     }
     prm.leave_subsection();
   }
 
   void
-  FlowParameters::resolve(const Regime regime)
+  FlowParameters::resolve(const Regime regime, const bool dumbbells)
   {
     if (outside_stress == OutsideStress::automatic)
-      outside_stress = regime == Regime::elastic_solid
+      outside_stress = regime == Regime::elastic_solid || dumbbells
                          ? OutsideStress::extension
                          : OutsideStress::updated;
   }

@@ -1,4 +1,5 @@
 #include <vefs/flow/flow_velocity.h>
+#include <vefs/stress/dumbbells.h>
 #include <vefs/stress/stress.h>
 #include <vefs/transport/field_extension.h>
 
@@ -219,12 +220,24 @@ namespace vefs
         statistics.energy_change_transport = advected - last_energy;
         last_energy                        = advected;
       }
+    if (parameters.material.has_dumbbells())
+      {
+        // The advection and the mesh change carried the fields q_i and the
+        // stress apart: the flow step sees the fields' stress.
+        TimerOutput::Scope scope(timer, "4 stress update");
+        set_ensemble_stress(fields, rheology);
+      }
     {
       TimerOutput::Scope scope(timer, "3 diffusion: setup");
       flow.setup(domain, time.time() + time.tau());
     }
     statistics.linear_iterations = solve_step(fields, time.tau());
-    update_fields(fields, domain, time.tau(), time.expected_cfl(), statistics);
+    update_fields(fields,
+                  domain,
+                  time.tau(),
+                  time.expected_cfl(),
+                  time.step(),
+                  statistics);
     if (parameters.energy_budget)
       {
         const double extended              = energy(fields, domain);
@@ -292,6 +305,7 @@ namespace vefs
                                    const LiquidDomain<dim> &domain,
                                    const double             tau,
                                    const double             expected_cfl,
+                                   const unsigned int       step,
                                    StepStatistics<dim>     &statistics)
   {
     // The next characteristics trace back through the band around the
@@ -316,12 +330,22 @@ namespace vefs
         // the stress components of the fields.
         fields.blend_velocity_into(blended_velocity, theta);
         const StressUpdateReport report =
-          update_stress(fields,
-                        blended_velocity,
-                        domain,
-                        rheology,
-                        tau,
-                        parameters.flow.extends_outside_stress());
+          parameters.material.has_dumbbells()
+            ? update_dumbbells(
+                fields,
+                blended_velocity,
+                domain,
+                rheology,
+                tau,
+                dumbbells::increments<dim>(fields.n_dumbbell_fields,
+                                           parameters.material.dumbbell_seed,
+                                           step))
+            : update_stress(fields,
+                            blended_velocity,
+                            domain,
+                            rheology,
+                            tau,
+                            parameters.flow.extends_outside_stress());
         statistics.max_velocity_gradient = report.max_velocity_gradient;
         statistics.strain_limited_points = report.strain_limited_points;
       }
@@ -359,6 +383,9 @@ namespace vefs
                              layers,
                              stress_components(fields));
       }
+    if (parameters.material.has_dumbbells())
+      // The extension averaged the fields q_i and the stress apart.
+      set_ensemble_stress(fields, rheology);
   }
 
   template <int dim>

@@ -181,27 +181,68 @@ namespace vefs
   Probe<dim>
   probe_velocity(const TransportedFields<dim> &fields,
                  const BoxMeshLocator<dim>    &locator,
-                 const Point<dim>             &point)
+                 const Point<dim>             &point,
+                 const double                  shear_modulus)
   {
     // Exactly one rank owns the cell the locator finds. Components 0 to
-    // dim - 1: the velocity; dim: the level set.
-    std::array<double, dim + 1> values{};
-    const auto                  cell = locator.locate(point);
+    // dim - 1: the velocity; dim: the level set; then the stress (if any),
+    // and with dumbbells the mean square of each field's q_a q_b less the
+    // square of their mean: the variance over the fields.
+    constexpr unsigned int n_stress =
+      TransportedFields<dim>::n_stress_components;
+    const unsigned int  first_stress = dim + 1;
+    const unsigned int  first_spread = first_stress + n_stress;
+    std::vector<double> values(first_spread + n_stress);
+    const auto          cell = locator.locate(point);
     if (cell->is_locally_owned())
       {
-        const Point<dim> xi = BoxMeshLocator<dim>::unit_point(cell, point);
-        const auto       dof_cell = fields.cell_of(cell);
+        const Point<dim>   xi = BoxMeshLocator<dim>::unit_point(cell, point);
+        const auto         dof_cell = fields.cell_of(cell);
+        const unsigned int n_fields = fields.n_dumbbell_fields;
+        std::vector<SymmetricTensor<2, dim>> products(n_fields);
         for (const unsigned int v : cell->vertex_indices())
           {
             const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
             for (unsigned int d = 0; d <= dim; ++d)
               values[d] += weight * fields.value_at(dof_cell, v, d);
+            if (fields.has_stress())
+              for (unsigned int i = 0; i < n_stress; ++i)
+                values[first_stress + i] +=
+                  weight *
+                  fields.value_at(
+                    dof_cell,
+                    v,
+                    TransportedFields<dim>::first_stress_component + i);
+            for (unsigned int f = 0; f < n_fields; ++f)
+              products[f] +=
+                weight *
+                symmetrize(outer_product(fields.dumbbell_at(dof_cell, v, f),
+                                         fields.dumbbell_at(dof_cell, v, f)));
+          }
+        if (n_fields > 1)
+          {
+            SymmetricTensor<2, dim> mean, square;
+            for (const auto &p : products)
+              for (unsigned int i = 0; i < n_stress; ++i)
+                {
+                  mean.access_raw_entry(i) += p.access_raw_entry(i) / n_fields;
+                  square.access_raw_entry(i) +=
+                    p.access_raw_entry(i) * p.access_raw_entry(i) / n_fields;
+                }
+            for (unsigned int i = 0; i < n_stress; ++i)
+              {
+                const double m = mean.access_raw_entry(i);
+                // The sample variance, (N / (N - 1)) (<p^2> - <p>^2).
+                values[first_spread + i] =
+                  std::max(0., square.access_raw_entry(i) - m * m) * n_fields /
+                  (n_fields - 1.);
+              }
           }
       }
     // deal.II instantiates the sum of tensors of dimension up to 3 only.
     MPI_Allreduce(MPI_IN_PLACE,
                   values.data(),
-                  dim + 1,
+                  values.size(),
                   MPI_DOUBLE,
                   MPI_SUM,
                   fields.dof_handler.get_triangulation().get_communicator());
@@ -210,6 +251,14 @@ namespace vefs
     for (unsigned int d = 0; d < dim; ++d)
       probe.velocity[d] = values[d];
     probe.in_liquid = values[dim] < 0;
+    for (unsigned int i = 0; i < n_stress; ++i)
+      {
+        probe.stress.access_raw_entry(i) = values[first_stress + i];
+        if (fields.n_dumbbell_fields > 1)
+          probe.stress_error.access_raw_entry(i) =
+            shear_modulus *
+            std::sqrt(values[first_spread + i] / fields.n_dumbbell_fields);
+      }
     return probe;
   }
 
@@ -232,9 +281,11 @@ namespace vefs
   template Probe<2>
   probe_velocity<2>(const TransportedFields<2> &,
                     const BoxMeshLocator<2> &,
-                    const Point<2> &);
+                    const Point<2> &,
+                    const double);
   template Probe<3>
   probe_velocity<3>(const TransportedFields<3> &,
                     const BoxMeshLocator<3> &,
-                    const Point<3> &);
+                    const Point<3> &,
+                    const double);
 } // namespace vefs

@@ -76,6 +76,59 @@ namespace vefs
               "sigma_xz",
               "sigma_yz"};
     }
+
+    /**
+     * The components of the fields before the dumbbells' (all of them
+     * without dumbbells): N_f configuration fields are too many to write.
+     */
+    template <int dim>
+    class FieldsBeforeDumbbells : public DataPostprocessor<dim>
+    {
+    public:
+      FieldsBeforeDumbbells(
+        const std::vector<std::string> &names,
+        const std::vector<
+          DataComponentInterpretation::DataComponentInterpretation>
+          &interpretation)
+        : names(names)
+        , interpretation(interpretation)
+      {
+      }
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>> &computed_quantities) const override
+      {
+        for (unsigned int q = 0; q < inputs.solution_values.size(); ++q)
+          for (unsigned int c = 0; c < names.size(); ++c)
+            computed_quantities[q](c) = inputs.solution_values[q][c];
+      }
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        return names;
+      }
+
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      get_data_component_interpretation() const override
+      {
+        return interpretation;
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_values;
+      }
+
+    private:
+      const std::vector<std::string> names;
+      const std::vector<
+        DataComponentInterpretation::DataComponentInterpretation>
+        interpretation;
+    };
   } // namespace
 
   template <int dim>
@@ -120,10 +173,18 @@ namespace vefs
           field_interpretation.push_back(
             DataComponentInterpretation::component_is_part_of_vector);
         }
-    data_out.add_data_vector(fields.dof_handler,
-                             fields.vector(),
-                             names,
-                             field_interpretation);
+    const FieldsBeforeDumbbells<dim> fields_before_dumbbells(
+      names,
+      field_interpretation);
+    if (fields.n_dumbbell_fields > 0)
+      data_out.add_data_vector(fields.dof_handler,
+                               fields.vector(),
+                               fields_before_dumbbells);
+    else
+      data_out.add_data_vector(fields.dof_handler,
+                               fields.vector(),
+                               names,
+                               field_interpretation);
 
     const LiquidIndicator<dim> phi;
     data_out.add_data_vector(fields.dof_handler, fields.vector(), phi);

@@ -46,6 +46,34 @@ namespace vefs
         "and eta_p > 0). A positive solvent viscosity with Alpha = 0 adds a "
         "viscous stress 2 eta_s eps(u): a Kelvin-Voigt solid.",
         Patterns::Integer(0, 1));
+      add_selection(
+        prm,
+        "Stress model",
+        stress_model,
+        std::vector<std::pair<std::string, StressModel>>{
+          {"macroscopic", StressModel::macroscopic},
+          {"dumbbells", StressModel::dumbbells}},
+        "What carries the polymer stress (Oldroyd-B or elastic regime): "
+        "macroscopic, the constitutive law above; dumbbells, 'Dumbbell "
+        "fields' Hookean dumbbells as Brownian configuration fields q_i, "
+        "sigma = G (<q q^T> - I), whose mean follows the same law "
+        "(doc/dumbbells.md). With alpha = 0 the fields are material line "
+        "elements and the run equals the macroscopic one.");
+      prm.add_parameter("Dumbbell fields",
+                        dumbbell_fields,
+                        "N_f, the number of configuration fields with 'Stress "
+                        "model = dumbbells' (at least the dimension): the "
+                        "statistical error of the stress falls like "
+                        "N_f^(-1/2), the cost of the transport grows like "
+                        "N_f (doc/dumbbells.md).",
+                        Patterns::Integer(1, 100000));
+      prm.add_parameter("Dumbbell seed",
+                        dumbbell_seed,
+                        "Seed of the dumbbells' initial vectors and Wiener "
+                        "increments: the same seed gives the same run on any "
+                        "number of MPI ranks, and a restarted run the same "
+                        "increments as the uninterrupted one.",
+                        Patterns::Integer(0));
     }
     prm.leave_subsection();
   }
@@ -77,13 +105,21 @@ namespace vefs
                           : "a positive relaxation time (Oldroyd-B)") +
               " needs a positive polymer viscosity (the shear modulus is "
               "eta_p / lambda)");
+    require(!has_dumbbells() || regime() != Regime::newtonian,
+            "Material/Stress model",
+            "dumbbells carry the polymer stress of the Oldroyd-B or elastic "
+            "regime: they need a positive relaxation time");
+    require(!has_dumbbells() || dumbbell_fields >= dimension,
+            "Material/Dumbbell fields",
+            "needs at least as many fields as dimensions, so that <q q^T> "
+            "can be the identity");
   }
 
   void
-  StressParameters::resolve(const Regime regime)
+  StressParameters::resolve(const Regime regime, const bool dumbbells)
   {
     if (stress_update == StressUpdate::automatic)
-      stress_update = regime == Regime::elastic_solid
+      stress_update = regime == Regime::elastic_solid || dumbbells
                         ? StressUpdate::exponential
                         : StressUpdate::linear;
   }
@@ -110,7 +146,7 @@ namespace vefs
         "constant over the step, positive definite by construction and "
         "equal to the linear one to first order. The relaxation (alpha > 0) "
         "follows in both cases. automatic: exponential for an elastic solid "
-        "(alpha = 0), linear for a liquid.");
+        "(alpha = 0) and for dumbbells, linear for a liquid.");
       prm.add_parameter(
         "Stress theta",
         stress_theta,

@@ -223,6 +223,9 @@ namespace vefs
            ++i)
         components.push_back(TransportedFields<dim>::first_stress_component +
                              i);
+    // The dumbbells' fields are the stress's.
+    for (unsigned int c = 0; c < dim * fields.n_dumbbell_fields; ++c)
+      components.push_back(fields.first_dumbbell_component + c);
     return components;
   }
 

@@ -119,7 +119,7 @@ namespace
       {
         n_not_one_owner += n_owners[i] != 1;
         const Tensor<1, dim> u =
-          vefs::probe_velocity(fields, locator, points[i]).velocity;
+          vefs::probe_velocity(fields, locator, points[i], 1.).velocity;
         for (unsigned int d = 0; d < dim; ++d)
           velocity_error =
             std::max(velocity_error,

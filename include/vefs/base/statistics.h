@@ -2,6 +2,7 @@
 #define vefs_statistics_h
 
 #include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
 #include <mpi.h>
@@ -107,6 +108,10 @@ namespace vefs
     double contact_reaction = 0;
     /** Only with a probe point: the velocity there. */
     Tensor<1, dim> probe_velocity;
+    /** Only with a probe point and a stress: the stress there. */
+    SymmetricTensor<2, dim> probe_stress;
+    /** The same with dumbbells: its standard error, per component. */
+    SymmetricTensor<2, dim> probe_stress_error;
   };
 
   /**

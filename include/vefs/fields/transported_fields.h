@@ -28,9 +28,12 @@ namespace vefs
    * beyond the liquid like the velocity), and with the second-order time
    * scheme only, the acceleration a of the last flow step (extended like
    * the velocity; doc/time_step_flow.md, "The second-order scheme").
-   * Components: u_0 .. u_{dim-1}, psi, then the independent components of
-   * sigma in the order of SymmetricTensor<2, dim>::unrolled_index(), then
-   * a_0 .. a_{dim-1}.
+   * With 'Material/Stress model = dumbbells', the N_f configuration fields
+   * q_1 .. q_N_f follow (doc/dumbbells.md), and sigma holds their ensemble
+   * stress. Components: u_0 .. u_{dim-1}, psi, then the independent
+   * components of sigma in the order of
+   * SymmetricTensor<2, dim>::unrolled_index(), then a_0 .. a_{dim-1}, then
+   * the dim components of each q_i.
    */
   template <int dim>
   class TransportedFields
@@ -68,13 +71,15 @@ namespace vefs
 
     /**
      * @p periodic_directions: the coordinate directions whose two walls
-     * (boundary ids 2d and 2d+1) are periodic.
+     * (boundary ids 2d and 2d+1) are periodic; @p n_dumbbell_fields: N_f,
+     * zero without dumbbells (they need @p with_stress).
      */
     TransportedFields(
       const parallel::distributed::Triangulation<dim> &triangulation,
       const bool                                       with_stress,
       const bool                                       with_acceleration,
-      const std::vector<unsigned int>                 &periodic_directions);
+      const std::vector<unsigned int>                 &periodic_directions,
+      const unsigned int                               n_dumbbell_fields = 0);
 
     bool
     has_stress() const
@@ -186,6 +191,25 @@ namespace vefs
         fields(node.dofs[first_acceleration_component + d]) = a[d];
     }
 
+    /** Configuration field @p i at @p node; only with dumbbells. */
+    Tensor<1, dim>
+    dumbbell(const Node &node, const unsigned int i) const
+    {
+      Tensor<1, dim> q;
+      for (unsigned int d = 0; d < dim; ++d)
+        q[d] = fields(node.dofs[first_dumbbell_component + dim * i + d]);
+      return q;
+    }
+
+    void
+    set_dumbbell(const Node           &node,
+                 const unsigned int    i,
+                 const Tensor<1, dim> &q)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        fields(node.dofs[first_dumbbell_component + dim * i + d]) = q[d];
+    }
+
     /** Component @p c of the layout above, for loops over all fields. */
     double
     value(const Node &node, const unsigned int c) const
@@ -243,6 +267,20 @@ namespace vefs
         sigma.access_raw_entry(i) =
           fields(cell->vertex_dof_index(v, first_stress_component + i));
       return sigma;
+    }
+
+    /** Only with dumbbells: configuration field @p i at a cell's vertex. */
+    template <typename CellIterator>
+    Tensor<1, dim>
+    dumbbell_at(const CellIterator &cell,
+                const unsigned int  v,
+                const unsigned int  i) const
+    {
+      Tensor<1, dim> q;
+      for (unsigned int d = 0; d < dim; ++d)
+        q[d] = fields(
+          cell->vertex_dof_index(v, first_dumbbell_component + dim * i + d));
+      return q;
     }
 
     /** Only if has_acceleration(). */
@@ -420,19 +458,23 @@ namespace vefs
 
     const bool with_stress;
     const bool with_acceleration;
+    /** N_f; zero without dumbbells. */
+    const unsigned int n_dumbbell_fields;
     /**
      * dim + 1, plus the stress components if there is a stress, plus dim
-     * if there is an acceleration.
+     * if there is an acceleration, plus dim N_f.
      */
     const unsigned int n_components;
     /** After the stress, if any; meaningful only if has_acceleration(). */
-    const unsigned int        first_acceleration_component;
-    const MappingQ1<dim>      mapping;
-    const FESystem<dim>       fe;
-    DoFHandler<dim>           dof_handler;
-    AffineConstraints<double> constraints;
-    IndexSet                  owned_dofs;
-    IndexSet                  relevant_dofs;
+    const unsigned int first_acceleration_component;
+    /** After the acceleration, if any; meaningful only with dumbbells. */
+    const unsigned int                                 first_dumbbell_component;
+    const MappingQ1<dim>                               mapping;
+    const FESystem<dim>                                fe;
+    DoFHandler<dim>                                    dof_handler;
+    AffineConstraints<double>                          constraints;
+    IndexSet                                           owned_dofs;
+    IndexSet                                           relevant_dofs;
     std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
 
   private:

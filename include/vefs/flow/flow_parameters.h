@@ -32,7 +32,7 @@ namespace vefs
      * doc/oscillating_beam.md) and updated, the seed's, for a liquid.
      */
     void
-    resolve(const Regime regime);
+    resolve(const Regime regime, const bool dumbbells);
 
     /**
      * Whether the vertices of cut cells outside the liquid take the extended

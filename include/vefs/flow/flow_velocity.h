@@ -84,14 +84,16 @@ namespace vefs
     solve_with_contact(const TransportedFields<dim> &fields, const double tau);
 
     /**
-     * Copy the new velocity to @p fields, update the stress, and extend
-     * both beyond the liquid, at least @p expected_cfl cells wide.
+     * Copy the new velocity to @p fields, update the stress (or the
+     * dumbbells, with the increments of @p step), and extend both beyond
+     * the liquid, at least @p expected_cfl cells wide.
      */
     void
     update_fields(TransportedFields<dim>  &fields,
                   const LiquidDomain<dim> &domain,
                   const double             tau,
                   const double             expected_cfl,
+                  const unsigned int       step,
                   StepStatistics<dim>     &statistics);
 
     /**

@@ -38,14 +38,27 @@ namespace vefs
     Tensor<1, dim> velocity;
     /** Whether the level set puts the point in the liquid. */
     bool in_liquid;
+    /** The stress there, if the fields carry one. */
+    SymmetricTensor<2, dim> stress;
+    /**
+     * With dumbbells: the standard error of the ensemble stress, per
+     * component: G s / sqrt(N_f), s the standard deviation over the fields
+     * of q_a q_b (Q1 in the cell like the stress).
+     */
+    SymmetricTensor<2, dim> stress_error;
   };
 
-  /** The velocity and the level set of @p fields at @p point, on every rank. */
+  /**
+   * The velocity, the level set and the stress (if any) of @p fields at
+   * @p point, on every rank; @p shear_modulus: G, for the dumbbells'
+   * standard error.
+   */
   template <int dim>
   Probe<dim>
   probe_velocity(const TransportedFields<dim> &fields,
                  const BoxMeshLocator<dim>    &locator,
-                 const Point<dim>             &point);
+                 const Point<dim>             &point,
+                 const double                  shear_modulus);
 
   /**
    * Measure the liquid domain of the flow step: volume, centroid, energies

@@ -36,6 +36,17 @@ namespace vefs
   };
 
   /**
+   * What carries the polymer stress (doc/dumbbells.md): the constitutive
+   * law itself, or an ensemble of Hookean dumbbells as Brownian
+   * configuration fields.
+   */
+  enum class StressModel
+  {
+    macroscopic,
+    dumbbells
+  };
+
+  /**
    * The material and the body force on it: subsection "Material" and the
    * top-level entry "Gravity". The defaults: water under the earth's
    * gravity.
@@ -64,12 +75,23 @@ namespace vefs
       return solvent_viscosity + polymer_viscosity;
     }
 
+    bool
+    has_dumbbells() const
+    {
+      return stress_model == StressModel::dumbbells;
+    }
+
     double              density           = 1000;
     double              solvent_viscosity = 0.001;
     double              polymer_viscosity = 0;
     double              relaxation_time   = 0;
     double              alpha             = 1;
     std::vector<double> gravity           = {0, -9.81};
+    StressModel         stress_model      = StressModel::macroscopic;
+    /** N_f, the number of configuration fields. */
+    unsigned int dumbbell_fields = 100;
+    /** Seed of the fields' initial vectors and Wiener increments. */
+    unsigned int dumbbell_seed = 1;
   };
 
   /** How the stress is updated after the flow step: subsection "Stress". */
@@ -81,10 +103,11 @@ namespace vefs
     /**
      * 'automatic' becomes exponential for an elastic solid (an impact
      * breaks the linear update: doc/time_step_flow.md, step 9) and linear,
-     * the seed's, for a liquid.
+     * the seed's, for a liquid; exponential for dumbbells (their update:
+     * doc/dumbbells.md).
      */
     void
-    resolve(const Regime regime);
+    resolve(const Regime regime, const bool dumbbells);
 
     StressUpdate stress_update = StressUpdate::automatic;
     /** Weight of the new velocity in the stress of the diffusion step. */

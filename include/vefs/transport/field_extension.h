@@ -47,7 +47,10 @@ namespace vefs
   std::vector<unsigned int>
   velocity_and_acceleration_components(const TransportedFields<dim> &fields);
 
-  /** The stress components of @p fields (none without a stress). */
+  /**
+   * The stress components of @p fields (none without a stress), and the
+   * dumbbells' fields if any.
+   */
   template <int dim>
   std::vector<unsigned int>
   stress_components(const TransportedFields<dim> &fields);

@@ -1,0 +1,116 @@
+#ifndef vefs_dumbbells_h
+#define vefs_dumbbells_h
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <vefs/fields/transported_fields.h>
+#include <vefs/stress/rheology.h>
+#include <vefs/stress/stress.h>
+#include <vefs/transport/liquid_domain.h>
+
+#include <vector>
+
+namespace vefs
+{
+  /**
+   * Hookean dumbbells as Brownian configuration fields (doc/dumbbells.md):
+   * N_f vector fields q_i carried by the flow, each driven by one Wiener
+   * process for the whole domain, with the ensemble stress
+   * sigma = G (<q q^T> - I), G = eta_p / lambda, <.> the mean over the
+   * fields. The pieces below act at one point; the functions after the
+   * namespace apply them to the transported fields.
+   */
+  namespace dumbbells
+  {
+    /** <q q^T>: the mean of q_i q_i^T over the fields. */
+    template <int dim>
+    SymmetricTensor<2, dim>
+    second_moment(const std::vector<Tensor<1, dim>> &q);
+
+    /**
+     * The lower triangular L with L L^T = @p B; throws ExcMessage if @p B
+     * is not positive definite.
+     */
+    template <int dim>
+    Tensor<2, dim>
+    cholesky_factor(const SymmetricTensor<2, dim> &B);
+
+    /** The orthogonal factor R of the polar decomposition A = R U. */
+    template <int dim>
+    Tensor<2, dim>
+    orthogonal_factor(const Tensor<2, dim> &A);
+
+    /**
+     * The linear map T nearest to @p F with T B T^T = @p B_new: T =
+     * D R C^{-1} with C C^T = B, D D^T = B_new and R the orthogonal matrix
+     * nearest to D^{-1} F C. If F B F^T = B_new, then T = F.
+     */
+    template <int dim>
+    Tensor<2, dim>
+    moment_map(const SymmetricTensor<2, dim> &B,
+               const SymmetricTensor<2, dim> &B_new,
+               const Tensor<2, dim>          &F);
+
+    /**
+     * @p n_fields vectors whose second moment is exactly the identity:
+     * standard normal draws (seeded by @p seed) mapped by the inverse
+     * Cholesky factor of their own second moment.
+     */
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    equilibrium_sample(const unsigned int n_fields, const unsigned int seed);
+
+    /**
+     * The standard normal increments xi_i of step @p step, one per field:
+     * the same on every rank, and a function of (seed, step) only, so that
+     * a resumed run draws what the uninterrupted one drew.
+     */
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    increments(const unsigned int n_fields,
+               const unsigned int seed,
+               const unsigned int step);
+  } // namespace dumbbells
+
+  /**
+   * The fields at the start of a run: q_i(x) = chol(c_0(x)) q^_i, q^ an
+   * equilibrium_sample() and c_0 = I + sigma_0 / G from the initial stress
+   * the fields hold, so that <q q^T> = c_0 exactly; then the ensemble stress.
+   * Throws InputError naming 'Initial liquid/Stress' where c_0 is not
+   * positive definite.
+   */
+  template <int dim>
+  void
+  set_initial_dumbbells(TransportedFields<dim> &fields,
+                        const Rheology<dim>    &rheology,
+                        const unsigned int      seed);
+
+  /** The stress components of the fields := G (<q q^T> - I) at every node. */
+  template <int dim>
+  void
+  set_ensemble_stress(TransportedFields<dim> &fields,
+                      const Rheology<dim>    &rheology);
+
+  /**
+   * The dumbbells' step 9 of doc/time_step_flow.md (doc/dumbbells.md):
+   * each liquid cell around a node carries its fields by E = exp(tau L)
+   * (the macroscopic exponential update's L, strain bound included), and
+   * the node's fields become q_i = sqrt(k) T q*_i + sqrt(1 - k) xi_i, k the
+   * stress factor of the step, xi_i = @p increments, T the moment_map() from
+   * <q* q*^T> to the cells' weighted mean of E <q* q*^T> E^T, nearest to
+   * their mean E. The mean of <q q^T> over the increments is then the
+   * macroscopic update's c; with alpha = 0 (k = 1) it is that c. Then the
+   * ensemble stress. Returns what update_stress() returns.
+   */
+  template <int dim>
+  StressUpdateReport
+  update_dumbbells(TransportedFields<dim>                            &fields,
+                   const typename TransportedFields<dim>::VectorType &velocity,
+                   const LiquidDomain<dim>                           &domain,
+                   const Rheology<dim>                               &rheology,
+                   const double                                       tau,
+                   const std::vector<Tensor<1, dim>> &increments);
+} // namespace vefs
+
+#endif
