@@ -1,6 +1,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 
+#include <vefs/compat/componentwise_constraints.h>
 #include <vefs/fields/transported_fields.h>
 
 #include <cmath>
@@ -43,16 +44,10 @@ namespace vefs
       relevant_dofs,
       dof_handler.get_triangulation().get_communicator());
 
-    constraints.clear();
-    constraints.reinit(relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    for (const unsigned int d : periodic_directions)
-      DoFTools::make_periodicity_constraints(dof_handler,
-                                             2 * d,
-                                             2 * d + 1,
-                                             d,
-                                             constraints);
-    constraints.close();
+    make_componentwise_constraints(dof_handler,
+                                   periodic_directions,
+                                   relevant_dofs,
+                                   constraints);
 
     initialize_vector(fields);
     localize_constraints();
