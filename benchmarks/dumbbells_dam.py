@@ -1,0 +1,113 @@
+#!/usr/bin/env python3
+"""The Oldroyd-B broken dam (prm/oldroyd_b_dam_2d.prm, Wi = 0.93) with its
+polymer stress carried by Hookean dumbbells against the macroscopic law:
+the front on the floor and the height on the x- wall at t = 0.1, 0.2,
+0.25 s, for several seeds at one N_f, with the seeds' mean and its
+standard error, and how many standard errors the macroscopic run lies
+from the mean (doc/dumbbells.md).
+
+Both run to t = 0.25 s with the settings dumbbells need (first-order
+splitting, exponential stress update, 'Outside stress of cut cells =
+extension'), one rank, no visualization output; --reuse-seeds reads the
+dumbbells' runs of an earlier call and runs the macroscopic one only.
+
+Usage (from the repository root):
+  /usr/bin/python3 benchmarks/dumbbells_dam.py [--vefs build/vefs]
+      [--fields 400] [--seeds 1 2 3]
+      [--results-dir benchmarks/results/dumbbells_dam] [--no-run]
+"""
+
+import argparse
+import math
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+sys.path.insert(0, os.path.join(ROOT, "tests"))
+
+from vefs_tools.prm import apply_settings  # noqa: E402
+from vefs_tools.statistics import read_statistics  # noqa: E402
+
+SCENE = os.path.join(ROOT, "prm", "oldroyd_b_dam_2d.prm")
+TIMES = [0.1, 0.2, 0.25]
+COMMON = ["Time/End time=0.25", "Time/Scheme=first order",
+          "Flow/Outside stress of cut cells=extension",
+          "Stress/Stress update=exponential", "Output/Interval=0"]
+
+
+def run(vefs, directory, settings, skip):
+    if not skip:
+        with open(SCENE) as f:
+            text = apply_settings(f.read(), COMMON + settings +
+                                  ["Output directory=" + directory])
+        with open(directory + ".prm", "w") as f:
+            f.write(text)
+        with open(directory + ".log", "w") as log:
+            subprocess.run([vefs, directory + ".prm"], stdout=log,
+                           stderr=subprocess.STDOUT, check=True)
+    s = read_statistics(directory)
+
+    def at(column, t):
+        i = min(range(len(s["time"])), key=lambda k: abs(s["time"][k] - t))
+        return s[column][i]
+
+    return {"front": [at("floor_extent", t) for t in TIMES],
+            "height": [at("wall_height", t) for t in TIMES],
+            "wall": s["wall_time"][-1],
+            "volume": max(abs(v) for v in s["volume_change"])}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--vefs", default=os.path.join(ROOT, "build", "vefs"))
+    parser.add_argument("--fields", type=int, default=400)
+    parser.add_argument("--seeds", type=int, nargs="+", default=[1, 2, 3])
+    parser.add_argument("--results-dir", default=os.path.join(
+        ROOT, "benchmarks", "results", "dumbbells_dam"))
+    parser.add_argument("--no-run", action="store_true")
+    parser.add_argument("--reuse-seeds", action="store_true")
+    args = parser.parse_args()
+    os.makedirs(args.results_dir, exist_ok=True)
+
+    macro = run(args.vefs, os.path.join(args.results_dir, "macroscopic"), [],
+                args.no_run)
+    seeds = [run(args.vefs,
+                 os.path.join(args.results_dir, "seed_%d" % seed),
+                 ["Material/Stress model=dumbbells",
+                  "Material/Dumbbell fields=%d" % args.fields,
+                  "Material/Dumbbell seed=%d" % seed],
+                 args.no_run or args.reuse_seeds)
+             for seed in args.seeds]
+
+    header = " | ".join("%s %g s" % (q, t) for q in ("front", "height")
+                        for t in TIMES)
+    print("| run | %s | max volume change | wall time |" % header)
+    print("|---|" + "---|" * (2 * len(TIMES) + 2))
+
+    def row(name, r):
+        values = " | ".join("%.4f" % v for v in r["front"] + r["height"])
+        print("| %s | %s | %.1e | %.0f s |" % (name, values, r["volume"],
+                                              r["wall"]))
+
+    row("macroscopic", macro)
+    for seed, r in zip(args.seeds, seeds):
+        row("N_f = %d, seed %d" % (args.fields, seed), r)
+    n = len(seeds)
+    if n > 1:
+        cells = []
+        for q in ("front", "height"):
+            for k in range(len(TIMES)):
+                values = [r[q][k] for r in seeds]
+                mean = sum(values) / n
+                error = math.sqrt(sum((v - mean) ** 2 for v in values)
+                                  / (n - 1) / n)
+                distance = abs(macro[q][k] - mean) / error if error else 0
+                cells.append("%.4f ± %.4f (%.1f)" % (mean, error, distance))
+        print("| mean ± standard error (macroscopic's distance in standard "
+              "errors) | %s | | |" % " | ".join(cells))
+
+
+if __name__ == "__main__":
+    main()
