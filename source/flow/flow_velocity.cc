@@ -214,18 +214,19 @@ namespace vefs
                              StepStatistics<dim>     &statistics)
   {
     statistics.linear_iterations = 0;
+    if (parameters.material.has_dumbbells())
+      {
+        // The advection and the mesh change carried the fields q_i and the
+        // stress apart: the flow step (and the energy budget) sees the fields'
+        // stress.
+        TimerOutput::Scope scope(timer, "4 stress update");
+        set_ensemble_stress(fields, rheology);
+      }
     if (parameters.energy_budget)
       {
         const double advected              = energy(fields, domain);
         statistics.energy_change_transport = advected - last_energy;
         last_energy                        = advected;
-      }
-    if (parameters.material.has_dumbbells())
-      {
-        // The advection and the mesh change carried the fields q_i and the
-        // stress apart: the flow step sees the fields' stress.
-        TimerOutput::Scope scope(timer, "4 stress update");
-        set_ensemble_stress(fields, rheology);
       }
     {
       TimerOutput::Scope scope(timer, "3 diffusion: setup");
