@@ -205,27 +205,22 @@ namespace vefs
     // E <q* q*^T> E^T (the stress slots).
     VectorType sum;
     fields.initialize_vector(sum);
-    StressUpdateReport          report;
-    std::vector<Tensor<1, dim>> q(fields.n_dumbbell_fields);
-    for_each_liquid_vertex<dim>(
+    const StressUpdateReport report = for_each_liquid_vertex<dim>(
       fields,
       velocity,
       domain,
-      [&](const auto           &cell,
-          const unsigned int    v,
-          const Tensor<2, dim> &grad_u) {
-        const Tensor<2, dim> L = traceless(grad_u);
+      rheology,
+      tau,
+      [&](const auto &cell, const unsigned int v, const Tensor<2, dim> &L) {
         const Tensor<2, dim> E =
           tensor_exponential(rheology.limited_strain(L, tau));
-        for (unsigned int i = 0; i < q.size(); ++i)
-          q[i] = fields.dumbbell_at(cell, v, i);
-        const Tensor<2, dim>          B = dumbbells::second_moment(q);
+        // <q* q*^T> at the vertex is c* of the stress the fields hold
+        // (set_ensemble_stress() before the flow step): no loop over them
+        // for every cell around the vertex.
+        const Tensor<2, dim> c(
+          rheology.conformation(fields.stress_at(cell, v)));
         const SymmetricTensor<2, dim> carried =
-          symmetrize(E * B * transpose(E));
-        report.max_velocity_gradient =
-          std::max(report.max_velocity_gradient, grad_u.norm());
-        if (rheology.is_strain_limited(L, tau))
-          ++report.strain_limited_points;
+          symmetrize(E * c * transpose(E));
         const double weight = cell->measure();
         sum(cell->vertex_dof_index(v, 0)) += weight;
         for (unsigned int k = 0; k < dim * dim; ++k)
@@ -268,13 +263,6 @@ namespace vefs
       }
     fields.finalize();
     set_ensemble_stress(fields, rheology);
-
-    const MPI_Comm comm =
-      fields.dof_handler.get_triangulation().get_communicator();
-    report.max_velocity_gradient =
-      Utilities::MPI::max(report.max_velocity_gradient, comm);
-    report.strain_limited_points =
-      Utilities::MPI::sum(report.strain_limited_points, comm);
     return report;
   }
 

@@ -151,11 +151,13 @@ namespace vefs
   } // namespace
 
   template <int dim>
-  void
+  StressUpdateReport
   for_each_liquid_vertex(
     const TransportedFields<dim>                      &fields,
     const typename TransportedFields<dim>::VectorType &velocity,
     const LiquidDomain<dim>                           &domain,
+    const Rheology<dim>                               &rheology,
+    const double                                       tau,
     const std::function<
       void(const typename DoFHandler<dim>::active_cell_iterator &cell,
            const unsigned int                                    v,
@@ -169,6 +171,7 @@ namespace vefs
     std::vector<Tensor<2, dim>> grad_u(GeometryInfo<dim>::vertices_per_cell);
     LiquidValues<dim>           liquid_values(domain);
     std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
+    StressUpdateReport                                               report;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
@@ -214,8 +217,23 @@ namespace vefs
                 }
             }
           for (const unsigned int v : cell->vertex_indices())
-            carry(cell, v, grad_u[v]);
+            {
+              const Tensor<2, dim> L = traceless(grad_u[v]);
+              report.max_velocity_gradient =
+                std::max(report.max_velocity_gradient, grad_u[v].norm());
+              if (rheology.is_strain_limited(L, tau))
+                ++report.strain_limited_points;
+              carry(cell, v, L);
+            }
         }
+
+    const MPI_Comm comm =
+      fields.dof_handler.get_triangulation().get_communicator();
+    report.max_velocity_gradient =
+      Utilities::MPI::max(report.max_velocity_gradient, comm);
+    report.strain_limited_points =
+      Utilities::MPI::sum(report.strain_limited_points, comm);
+    return report;
   }
 
   template <int dim>
@@ -237,29 +255,21 @@ namespace vefs
     // the volume itself goes into the node's first component.
     VectorType sum;
     fields.initialize_vector(sum);
-    StressUpdateReport report;
-    for_each_liquid_vertex<dim>(fields,
-                                velocity,
-                                domain,
-                                [&](const auto           &cell,
-                                    const unsigned int    v,
-                                    const Tensor<2, dim> &grad_u) {
-                                  const SymmetricTensor<2, dim> advected =
-                                    fields.stress_at(cell, v);
-                                  const Tensor<2, dim> L = traceless(grad_u);
-                                  const SymmetricTensor<2, dim> updated =
-                                    rheology.updated_stress(advected, L, tau);
-                                  report.max_velocity_gradient =
-                                    std::max(report.max_velocity_gradient,
-                                             grad_u.norm());
-                                  if (rheology.is_strain_limited(L, tau))
-                                    ++report.strain_limited_points;
-                                  const double weight = cell->measure();
-                                  sum(cell->vertex_dof_index(v, 0)) += weight;
-                                  for (unsigned int i = 0; i < n_stress; ++i)
-                                    sum(cell->vertex_dof_index(v, first + i)) +=
-                                      weight * updated.access_raw_entry(i);
-                                });
+    const StressUpdateReport report = for_each_liquid_vertex<dim>(
+      fields,
+      velocity,
+      domain,
+      rheology,
+      tau,
+      [&](const auto &cell, const unsigned int v, const Tensor<2, dim> &L) {
+        const SymmetricTensor<2, dim> updated =
+          rheology.updated_stress(fields.stress_at(cell, v), L, tau);
+        const double weight = cell->measure();
+        sum(cell->vertex_dof_index(v, 0)) += weight;
+        for (unsigned int i = 0; i < n_stress; ++i)
+          sum(cell->vertex_dof_index(v, first + i)) +=
+            weight * updated.access_raw_entry(i);
+      });
     sum.compress(VectorOperation::add);
 
     for (const auto &node : fields.nodes())
@@ -276,13 +286,6 @@ namespace vefs
     fields.finalize();
     if (!outside_extended)
       bound_stress_outside_liquid(fields, domain, rheology, sum);
-
-    const MPI_Comm comm =
-      fields.dof_handler.get_triangulation().get_communicator();
-    report.max_velocity_gradient =
-      Utilities::MPI::max(report.max_velocity_gradient, comm);
-    report.strain_limited_points =
-      Utilities::MPI::sum(report.strain_limited_points, comm);
     return report;
   }
 
@@ -355,19 +358,23 @@ namespace vefs
                    const Rheology<3> &,
                    const double,
                    const bool);
-  template void
+  template StressUpdateReport
   for_each_liquid_vertex<2>(
     const TransportedFields<2> &,
     const TransportedFields<2>::VectorType &,
     const LiquidDomain<2> &,
+    const Rheology<2> &,
+    const double,
     const std::function<void(const DoFHandler<2>::active_cell_iterator &,
                              const unsigned int,
                              const Tensor<2, 2> &)> &);
-  template void
+  template StressUpdateReport
   for_each_liquid_vertex<3>(
     const TransportedFields<3> &,
     const TransportedFields<3>::VectorType &,
     const LiquidDomain<3> &,
+    const Rheology<3> &,
+    const double,
     const std::function<void(const DoFHandler<3>::active_cell_iterator &,
                              const unsigned int,
                              const Tensor<2, 3> &)> &);

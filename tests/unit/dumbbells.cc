@@ -147,26 +147,6 @@ namespace
                            5 * std::sqrt(2 / n_draws));
   }
 
-  /** u = (gdot y, 0). */
-  class SimpleShear : public Function<2>
-  {
-  public:
-    explicit SimpleShear(const double rate)
-      : Function<2>(2)
-      , rate(rate)
-    {
-    }
-
-    double
-    value(const Point<2> &p, const unsigned int component) const override
-    {
-      return component == 0 ? rate * p[1] : 0.;
-    }
-
-  private:
-    const double rate;
-  };
-
   void
   check_field_update(std::ostream &out)
   {
@@ -206,7 +186,9 @@ namespace
     for (auto *f : {&fields, &macroscopic})
       {
         f->setup_dofs();
-        f->interpolate(level_set, SimpleShear(rate), &initial_stress);
+        f->interpolate(level_set,
+                       unit_test::SimpleShear(rate),
+                       &initial_stress);
       }
     vefs::set_initial_dumbbells(fields, elastic, 4);
     std::vector<std::vector<Tensor<1, 2>>> q_star;

@@ -65,26 +65,6 @@ namespace
     return G * (symmetrize(F * transpose(F)) - unit_symmetric_tensor<2>());
   }
 
-  /** u = (gdot y, 0). */
-  class SimpleShear : public Function<2>
-  {
-  public:
-    explicit SimpleShear(const double rate)
-      : Function<2>(2)
-      , rate(rate)
-    {
-    }
-
-    double
-    value(const Point<2> &p, const unsigned int component) const override
-    {
-      return component == 0 ? rate * p[1] : 0.;
-    }
-
-  private:
-    const double rate;
-  };
-
   void
   check_updates(std::ostream &out)
   {
@@ -184,7 +164,7 @@ namespace
     fields.interpolate(
       ScalarFunctionFromFunctionObject<2>(
         [](const Point<2> &p) { return p[0] - 0.53; }),
-      SimpleShear(rate),
+      unit_test::SimpleShear(rate),
       std::make_unique<Functions::ConstantFunction<2>>(stress_values).get());
 
     const vefs::LiquidDomain<2> domain(fields);

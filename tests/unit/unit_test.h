@@ -36,6 +36,27 @@ namespace unit_test
     return 0;
   }
 
+  /** The 2D simple shear u = (gdot y, 0) of the stress update tests. */
+  class SimpleShear : public dealii::Function<2>
+  {
+  public:
+    explicit SimpleShear(const double rate)
+      : dealii::Function<2>(2)
+      , rate(rate)
+    {
+    }
+
+    double
+    value(const dealii::Point<2> &p,
+          const unsigned int      component) const override
+    {
+      return component == 0 ? rate * p[1] : 0.;
+    }
+
+  private:
+    const double rate;
+  };
+
   /** "label: below bound", or "label: VALUE, NOT below bound". */
   inline void
   check_below(std::ostream      &out,

@@ -101,7 +101,9 @@ namespace vefs
    * <q* q*^T> to the cells' weighted mean of E <q* q*^T> E^T, nearest to
    * their mean E. The mean of <q q^T> over the increments is then the
    * macroscopic update's c; with alpha = 0 (k = 1) it is that c. Then the
-   * ensemble stress. Returns what update_stress() returns.
+   * ensemble stress. The stress components must hold the fields' ensemble
+   * stress on entry (set_ensemble_stress()). Returns what update_stress()
+   * returns.
    */
   template <int dim>
   StressUpdateReport

@@ -42,22 +42,26 @@ namespace vefs
 
   /**
    * Calls @p carry for each vertex of each locally owned liquid cell with
-   * the velocity gradient (of @p velocity, a vector with the layout of the
-   * fields) by which that cell carries the stress of the vertex: a full
-   * cell its Q1 gradient at the vertex, a cut cell at all its vertices the
-   * mean gradient over its liquid part (the gradient the flow step's
-   * stress term sees).
+   * the traceless part L of the velocity gradient (of @p velocity, a vector
+   * with the layout of the fields) by which that cell carries the stress of
+   * the vertex: a full cell its Q1 gradient at the vertex, a cut cell at
+   * all its vertices the mean gradient over its liquid part (the gradient
+   * the flow step's stress term sees). Returns, over all ranks, the
+   * largest velocity gradient met and how often @p rheology's strain
+   * limiter acts on tau L. Collective.
    */
   template <int dim>
-  void
+  StressUpdateReport
   for_each_liquid_vertex(
     const TransportedFields<dim>                      &fields,
     const typename TransportedFields<dim>::VectorType &velocity,
     const LiquidDomain<dim>                           &domain,
+    const Rheology<dim>                               &rheology,
+    const double                                       tau,
     const std::function<
       void(const typename DoFHandler<dim>::active_cell_iterator &cell,
            const unsigned int                                    v,
-           const Tensor<2, dim> &grad_u)> &carry);
+           const Tensor<2, dim>                                 &L)> &carry);
 
   /**
    * Step 9 of doc/time_step_flow.md: the new stress sigma^{n+1} at
