@@ -1,0 +1,104 @@
+// correct_volume() (free_surface.h): one constant added to the level set
+// so that the sharp liquid volume of the flow step (sharp_liquid_volume())
+// is the target. Uniform meshes of the unit square (cube), h = 1/32 (1/16
+// in 3D), 1 and 2 ranks.
+// - A plane, psi = x_last - 0.4, target the volume below x_last = 0.45: the
+//   Q1 level set is exact and its volume linear in the shift, so the
+//   shift is -0.05 and the volume the target, both to round-off (1e-12).
+// - A circle (sphere) as a distance, psi = r - 0.3, target pi 0.31^2
+//   (4/3 pi 0.31^3): the volume is the target to 1e-12 of it; the shift is
+//   -0.01 up to the Q1 interpolation error of the distance, which moves the
+//   surface by at most dim h^2 / (8 R) (second derivatives of r at most
+//   1/R near it), at both radii: bound dim h^2 / (4 R).
+
+#include "unit_test.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/grid/grid_generator.h>
+
+#include <vefs/transport/free_surface.h>
+#include <vefs/transport/liquid_domain.h>
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+
+using namespace dealii;
+
+namespace
+{
+  template <int dim>
+  void
+  check(std::ostream                                   &out,
+        const std::string                              &name,
+        const std::function<double(const Point<dim> &)> level_set,
+        const double                                    target,
+        const double                                    exact_shift,
+        const double                                    shift_bound)
+  {
+    const MPI_Comm                            comm = MPI_COMM_WORLD;
+    parallel::distributed::Triangulation<dim> triangulation(comm);
+    GridGenerator::hyper_cube(triangulation, 0, 1);
+    triangulation.refine_global(dim == 2 ? 5 : 4);
+
+    vefs::TransportedFields<dim> fields(triangulation, false, false, {});
+    fields.setup_dofs();
+    for (const auto &node : fields.nodes())
+      fields.set_level_set(node, level_set(node.point));
+    fields.finalize();
+
+    const double shift  = vefs::correct_volume(fields, target);
+    const double volume = vefs::sharp_liquid_volume(fields, 0.).volume;
+
+    const std::string label = std::to_string(dim) + "D, " + name + ", ";
+    unit_test::check_below(out,
+                           label + "volume error over the target",
+                           std::abs(volume - target) / target,
+                           1e-12);
+    unit_test::check_below(out,
+                           label + "shift error",
+                           std::abs(shift - exact_shift),
+                           shift_bound);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  return unit_test::run(argc, argv, [](std::ostream &out) {
+    const double R = 0.3, R_target = 0.31;
+    check<2>(
+      out,
+      "plane",
+      [](const Point<2> &p) { return p[1] - 0.4; },
+      0.45,
+      -0.05,
+      1e-12);
+    check<3>(
+      out,
+      "plane",
+      [](const Point<3> &p) { return p[2] - 0.4; },
+      0.45,
+      -0.05,
+      1e-12);
+    const double h2 = 1. / 32, h3 = 1. / 16;
+    check<2>(
+      out,
+      "circle",
+      [=](const Point<2> &p) { return p.distance(Point<2>(0.5, 0.5)) - R; },
+      numbers::PI * R_target * R_target,
+      R - R_target,
+      2 * h2 * h2 / (4 * R));
+    check<3>(
+      out,
+      "sphere",
+      [=](const Point<3> &p) {
+        return p.distance(Point<3>(0.5, 0.5, 0.5)) - R;
+      },
+      4. / 3 * numbers::PI * std::pow(R_target, 3),
+      R - R_target,
+      3 * h3 * h3 / (4 * R));
+  });
+}
