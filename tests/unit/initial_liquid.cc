@@ -4,8 +4,8 @@
 // wall wets it); the brute-force distance is the smallest distance to those
 // faces, each a rectangle (segment in 2D) to which the point is projected
 // by clamping, negative inside the box (whose wetted walls belong to the
-// liquid). Checked at the points of a lattice
-// of 21^dim points over the cavity, to round-off (1e-14 of the cavity):
+// liquid). Checked at the points of a lattice of 21^dim points over the
+// cavity, to round-off (1e-14 of the cavity):
 // - 2D: the default water column, a box in the lower left corner (two
 //   faces on walls), and a box away from the walls;
 // - 3D: a box on the floor, and a box in a corner (three faces on walls);
