@@ -9,7 +9,7 @@
 // with tau_K = 0.25 / (rho/tau + 4 mu/h^2), and the lumped pressure mass
 // (N_i, 1)/mu; mu, k_g (geometric factor) and k_s (explicit stress factor)
 // from the rheology. Cells wholly in the liquid of an anisotropic mesh
-// (cells 1/4 x 1/8 (x 1/8)), u* and sigma* smooth fields interpolated at
+// (cells 1/4 x 1/16 (x 1/16)), u* and sigma* smooth fields interpolated at
 // the vertices, a Newtonian liquid and an Oldroyd-B one (lambda = 0.05 s,
 // eta_p = 2 Pa s), tau = 0.01 s. The reference uses a Gauss rule of 3
 // points, exact for these polynomial integrands as the code's own rule is:
