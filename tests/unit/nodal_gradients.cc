@@ -1,7 +1,7 @@
 // recover_nodal_gradients() (nodal_gradients.h): the mean over the cells
 // around a node of the cells' Q1 gradients is, on a uniform mesh, a central
 // difference. Checked at the nodes away from the boundary (there every node
-// has all its cells around), 1 and 2 ranks, two components:
+// has all its cells around), 1 and 2 ranks, the dim velocity components:
 // - exact for polynomials of total degree 2 (the central difference of a
 //   quadratic is its derivative; the mean over the rows above and below of
 //   a term linear in the other direction is its value on the node's row):
