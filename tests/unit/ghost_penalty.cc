@@ -19,6 +19,7 @@
 // 1e-10. A wrong weight or a non-vanishing linear form would be off by
 // order one.
 
+#include "flow_step_setup.h"
 #include "unit_test.h"
 
 #include <deal.II/base/mpi.h>
@@ -114,26 +115,15 @@ main(int argc, char **argv)
     fields.finalize();
     const vefs::LiquidDomain<dim> domain(fields);
 
-    vefs::CavityParameters   cavity;
-    vefs::MaterialParameters material;
-    vefs::StressParameters   stress;
-    vefs::FlowParameters     flow;
-    vefs::SolverParameters   solver;
-    cavity.cavity_upper = {1, 1};
-    stress.resolve(material.regime(), false);
-    const double                   tau = 0.01;
-    const vefs::FlowStepParameters parameters{cavity,
-                                              material,
-                                              stress,
-                                              flow,
-                                              solver,
-                                              4,
-                                              0.,
-                                              false,
-                                              false,
-                                              tau};
-    const vefs::Rheology<dim>      rheology(material, stress, 0.);
-    vefs::FlowElements<dim>        elements(flow, 4);
+    unit_test::FlowStepSetup setup;
+    setup.cavity.cavity_upper = {1, 1};
+    setup.stress.resolve(setup.material.regime(), false);
+    const double                   tau        = 0.01;
+    const vefs::FlowStepParameters parameters = setup.step(4, tau);
+    const auto                    &material   = setup.material;
+    const auto                    &solver     = setup.solver;
+    const vefs::Rheology<dim>      rheology(material, setup.stress, 0.);
+    vefs::FlowElements<dim>        elements(setup.flow, 4);
 
     const FESystem<dim> fe(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1);
     DoFHandler<dim>     dof_handler(triangulation);

@@ -16,6 +16,7 @@
 // the two agree to round-off, relative error below 1e-12 of the largest
 // entry. 1 and 2 ranks.
 
+#include "flow_step_setup.h"
 #include "unit_test.h"
 
 #include <deal.II/base/mpi.h>
@@ -52,11 +53,9 @@ namespace
                                               upper);
     triangulation.refine_global(2);
 
-    vefs::CavityParameters   cavity;
-    vefs::MaterialParameters material;
-    vefs::StressParameters   stress;
-    vefs::FlowParameters     flow;
-    vefs::SolverParameters   solver;
+    unit_test::FlowStepSetup  setup;
+    vefs::CavityParameters   &cavity   = setup.cavity;
+    vefs::MaterialParameters &material = setup.material;
     cavity.cavity_lower.assign(dim, 0.);
     cavity.cavity_upper.assign(upper.begin_raw(), upper.end_raw());
     material.gravity.assign(dim, 0.);
@@ -68,20 +67,11 @@ namespace
         material.polymer_viscosity = 2;
         material.relaxation_time   = 0.05;
       }
-    stress.resolve(material.regime(), false);
-    const vefs::FlowStepParameters parameters{cavity,
-                                              material,
-                                              stress,
-                                              flow,
-                                              solver,
-                                              2,
-                                              0.,
-                                              false,
-                                              false,
-                                              0.01};
-    const double                   tau = 0.01;
-    const vefs::Rheology<dim>      rheology(material, stress, 0.);
-    const vefs::FlowElements<dim>  elements(flow, 2);
+    setup.stress.resolve(material.regime(), false);
+    const double                   tau        = 0.01;
+    const vefs::FlowStepParameters parameters = setup.step(2, tau);
+    const vefs::Rheology<dim>      rheology(material, setup.stress, 0.);
+    const vefs::FlowElements<dim>  elements(setup.flow, 2);
 
     vefs::TransportedFields<dim> fields(triangulation, oldroyd_b, false, {});
     fields.setup_dofs();

@@ -16,8 +16,10 @@
 
 #include <vefs/base/time_control.h>
 
+#include <array>
 #include <cmath>
 #include <iostream>
+#include <tuple>
 
 namespace
 {
@@ -89,27 +91,18 @@ main(int argc, char **argv)
         << (largest_cfl <= 5 * (1 + 1e-12) ? "yes" : "NO") << '\n';
 
     // Landing on the end time (1) and on output times.
+    // (time at the start, step expected) for steps of 0.1 to the end time 1.
+    const std::array<std::tuple<const char *, double, double>, 4> landings = {
+      {{"landing, 0.1 left of 1", 0.9, 0.1},
+       {"landing, 0.15 left: a full step", 0.85, 0.1},
+       {"landing, 0.12 left: two halves", 0.88, 0.06},
+       {"landing, 0.05 left: shortened", 0.95, 0.05}}};
     vefs::TimeControl landing = clock(0.1, 0, 0);
-    landing.resume(9, 0.9, 0.1);
-    check_step(out,
-               "landing, 0.1 left of 1",
-               landing.landed({0.1, 0.1}).tau,
-               0.1);
-    landing.resume(8, 0.85, 0.1);
-    check_step(out,
-               "landing, 0.15 left: a full step",
-               landing.landed({0.1, 0.1}).tau,
-               0.1);
-    landing.resume(8, 0.88, 0.1);
-    check_step(out,
-               "landing, 0.12 left: two halves",
-               landing.landed({0.1, 0.1}).tau,
-               0.06);
-    landing.resume(8, 0.95, 0.1);
-    check_step(out,
-               "landing, 0.05 left: shortened",
-               landing.landed({0.1, 0.1}).tau,
-               0.05);
+    for (const auto &[label, time, expected] : landings)
+      {
+        landing.resume(8, time, 0.1);
+        check_step(out, label, landing.landed({0.1, 0.1}).tau, expected);
+      }
     vefs::TimeControl output = clock(0.1, 0, 0, 0.3);
     output.resume(2, 0.25, 0.1);
     check_step(out,
