@@ -225,18 +225,22 @@ namespace vefs
     // interpolated from ones that only the owner knows to be at a wall.
     Vector reaction(in_contact.locally_owned_elements(), touched, comm);
     const types::global_dof_index n_velocities = in_contact.size();
-    // A residual in the flow space's own unknowns.
+    // A residual in the flow space's own velocity unknowns (FlowNumbering:
+    // they come first, the interpolated ones after the pressures).
+    const auto add_to_velocity = [&](const types::global_dof_index dof,
+                                     const double                  residual) {
+      if (dof < n_velocities)
+        reaction(dof) += residual;
+    };
     const auto add_reaction = [&](const types::global_dof_index dof,
                                   const double                  residual) {
-      if (dof >= n_velocities)
-        return;
       if (const auto *entries = interpolation.get_constraint_entries(dof))
         {
           for (const auto &[from, weight] : *entries)
-            reaction(from) += weight * residual;
+            add_to_velocity(from, weight * residual);
         }
       else
-        reaction(dof) += residual;
+        add_to_velocity(dof, residual);
     };
     std::vector<types::global_dof_index> dofs;
     dealii::Vector<double>               values, residual;

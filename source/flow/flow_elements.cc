@@ -3,6 +3,7 @@
 #include <boost/serialization/vector.hpp>
 #include <vefs/flow/flow_elements.h>
 
+#include <algorithm>
 #include <array>
 #include <numeric>
 
@@ -230,6 +231,35 @@ namespace vefs
     const auto dofs = ghost_parent_dofs.find(cell->active_cell_index());
     AssertThrow(dofs != ghost_parent_dofs.end(), ExcInternalError());
     return dofs->second[v * cell->get_fe().n_components() + c];
+  }
+
+  template <int dim>
+  IndexSet
+  FlowElements<dim>::interpolated_dofs(const DoFHandler<dim> &dof_handler,
+                                       const unsigned int     fe_index) const
+  {
+    IndexSet interpolated(dof_handler.n_dofs());
+    if (!on_parents)
+      return interpolated;
+    const unsigned int n_components =
+      dof_handler.get_fe_collection()[fe_index].n_components();
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial() && cell->active_fe_index() == fe_index &&
+          on_parent(cell))
+        {
+          const unsigned int child =
+            cell->parent()->child_iterator_to_index(cell);
+          for (const unsigned int v : cell->vertex_indices())
+            if (child_vertex_weights[child][v].size() > 1)
+              for (unsigned int c = 0; c < n_components; ++c)
+                dofs.push_back(cell->vertex_dof_index(v, c, fe_index));
+        }
+    std::sort(dofs.begin(), dofs.end());
+    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+    interpolated.add_indices(dofs.begin(), dofs.end());
+    interpolated.compress();
+    return interpolated;
   }
 
   template <int dim>

@@ -19,6 +19,7 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <vefs/compat/owned_rows_matrix.h>
+#include <vefs/flow/flow_numbering.h>
 #include <vefs/flow/ghost_penalty.h>
 #include <vefs/flow/stokes_cell_system.h>
 #include <vefs/flow/stokes_step.h>
@@ -136,37 +137,22 @@ namespace vefs
         cell->set_active_fe_index(elements.has_liquid(cell) ? liquid_index
                                                             : empty_index);
     dof_handler.distribute_dofs(fe_collection);
+    numbering = renumber_flow_dofs(dof_handler, elements, liquid_index);
 
-    std::vector<unsigned int> block_component(dim + 1, 0);
-    block_component[dim] = 1;
-    DoFRenumbering::component_wise(dof_handler, block_component);
-    const auto dofs_per_block =
-      DoFTools::count_dofs_per_fe_block(dof_handler, block_component);
-    const types::global_dof_index n_u = dofs_per_block[0];
-    const types::global_dof_index n_p = dofs_per_block[1];
-
-    const IndexSet owned = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
-    owned_partitioning    = {owned.get_view(0, n_u),
-                             owned.get_view(n_u, n_u + n_p)};
-    relevant_partitioning = {relevant_dofs.get_view(0, n_u),
-                             relevant_dofs.get_view(n_u, n_u + n_p)};
+    owned_partitioning =
+      numbering.flow_blocks(dof_handler.locally_owned_dofs());
+    relevant_partitioning = numbering.flow_blocks(relevant_dofs);
     elements.exchange_parent_dofs(dof_handler, liquid_index, relevant_dofs);
     touched_dofs = relevant_dofs;
     touched_dofs.add_indices(elements.far_parent_dofs());
-    touched_partitioning = {touched_dofs.get_view(0, n_u),
-                            touched_dofs.get_view(n_u, n_u + n_p)};
+    touched_partitioning = numbering.flow_blocks(touched_dofs);
     check_periodic_liquid();
     interpolation.clear();
     interpolation.reinit(touched_dofs);
     elements.make_interpolation_constraints(dof_handler,
                                             liquid_index,
                                             interpolation);
-    n_interpolated = 0;
-    for (const auto &line : interpolation.get_lines())
-      if (owned.is_element(line.index))
-        ++n_interpolated;
-    n_interpolated = Utilities::MPI::sum(n_interpolated, comm);
     // The velocity block comes first: its indices are the global ones.
     contact.reset(dof_handler,
                   owned_partitioning[0],
@@ -246,12 +232,18 @@ namespace vefs
     constraints.close();
 
     // Pressures are constrained by pressures only (hanging nodes,
-    // interpolation on the parents).
-    const types::global_dof_index n_u = owned_partitioning[0].size();
+    // interpolation on the parents); the flow space's own unknowns by its
+    // own only: the interpolated ones are not in its matrices.
+    const types::global_dof_index n_u    = numbering.n_velocities();
+    const types::global_dof_index n_flow = numbering.n_flow_dofs();
     pressure_constraints.clear();
     pressure_constraints.reinit(touched_partitioning[1]);
     for (const auto &line : constraints.get_lines())
-      if (line.index >= n_u)
+      if (line.index < n_flow)
+        for (const auto &entry : line.entries)
+          AssertThrow(entry.first < n_flow, ExcInternalError());
+    for (const auto &line : constraints.get_lines())
+      if (line.index >= n_u && line.index < n_flow)
         {
           pressure_constraints.add_line(line.index - n_u);
           for (const auto &[column, weight] : line.entries)
@@ -273,8 +265,8 @@ namespace vefs
     // entries of each cell and face into Epetra's graph one by one took most
     // of the setup of the 3D ball. The entries are those the assembly
     // adds: a parent's element couples its vertices' unknowns once (through
-    // the constraints of the children it took 4 % of a step at 2.5 mm), the
-    // interpolated unknowns of its children keep their diagonal.
+    // the constraints of the children it took 4 % of a step at 2.5 mm); the
+    // interpolated unknowns of its children have no rows (FlowNumbering).
     BlockDynamicSparsityPattern          pattern(touched_partitioning);
     const FiniteElement<dim>            &fe = fe_collection[liquid_index];
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
@@ -283,30 +275,15 @@ namespace vefs
         {
           if (!elements.on_parent(cell))
             cell->get_dof_indices(dofs);
+          else if (elements.represents_family(cell))
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              {
+                const auto [component, vertex] =
+                  fe.system_to_component_index(i);
+                dofs[i] = elements.parent_vertex_dof(cell, vertex, component);
+              }
           else
-            {
-              const unsigned int child =
-                cell->parent()->child_iterator_to_index(cell);
-              for (unsigned int i = 0; i < dofs.size(); ++i)
-                {
-                  const auto [component, vertex] =
-                    fe.system_to_component_index(i);
-                  if (elements.vertex_weights(child, vertex).size() > 1)
-                    {
-                      const auto dof =
-                        cell->vertex_dof_index(vertex, component, liquid_index);
-                      pattern.add(dof, dof);
-                    }
-                }
-              if (!elements.represents_family(cell))
-                continue;
-              for (unsigned int i = 0; i < dofs.size(); ++i)
-                {
-                  const auto [component, vertex] =
-                    fe.system_to_component_index(i);
-                  dofs[i] = elements.parent_vertex_dof(cell, vertex, component);
-                }
-            }
+            continue;
           constraints.add_entries_local_to_global(dofs, pattern, false);
         }
     // The ghost penalty couples the two cells of a face.
@@ -321,10 +298,12 @@ namespace vefs
       [&](const auto &, const auto &, const auto &dofs) {
         constraints.add_entries_local_to_global(dofs, pattern, false);
       });
-    SparsityTools::distribute_sparsity_pattern(pattern,
-                                               dof_handler.locally_owned_dofs(),
-                                               comm,
-                                               touched_dofs);
+    const types::global_dof_index n_flow = numbering.n_flow_dofs();
+    SparsityTools::distribute_sparsity_pattern(
+      pattern,
+      dof_handler.locally_owned_dofs().get_view(0, n_flow),
+      comm,
+      touched_dofs.get_view(0, n_flow));
     make_owned_rows_matrix(pattern, owned_partitioning, comm, system_matrix);
 
     // The Schur approximation couples the pressures as the pressure block of
@@ -335,9 +314,14 @@ namespace vefs
 
     system_rhs.reinit(owned_partitioning, comm);
     lumped_pressure_mass.reinit(owned_partitioning, comm);
-    // Touched: the contact reactions of faces read far parent vertices.
-    solution.reinit(owned_partitioning, touched_partitioning, comm);
-    constraint_distribution.reinit(constraints, system_rhs, solution);
+    flow_solution.reinit(owned_partitioning, comm);
+    // All parts, the interpolated too; touched: the contact reactions of
+    // faces read far parent vertices.
+    owned_parts = numbering.all_parts(dof_handler.locally_owned_dofs());
+    solution.reinit(owned_parts, numbering.all_parts(touched_dofs), comm);
+    constraint_distribution.reinit(constraints,
+                                   BlockVector(owned_parts, comm),
+                                   solution);
   }
 
   template <int dim>
@@ -539,25 +523,6 @@ namespace vefs
                                                 child,
                                                 local.pressure_mass,
                                                 parent_pressure_mass);
-              // The rows of interpolated unknowns hold their diagonal
-              // only, of the size it would have (the solution is zero
-              // there until the constraints are distributed).
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  const auto [component, vertex] =
-                    fe.system_to_component_index(i);
-                  if (elements.vertex_weights(child, vertex).size() > 1)
-                    {
-                      const auto dof = sibling->vertex_dof_index(vertex,
-                                                                 component,
-                                                                 liquid_index);
-                      system_matrix.add(dof, dof, std::abs(local.matrix(i, i)));
-                      if (component == dim)
-                        schur_matrix.add(dof - n_u,
-                                         dof - n_u,
-                                         std::abs(local.schur(i, i)));
-                    }
-                }
             }
           if (!any_liquid)
             continue;
@@ -642,7 +607,8 @@ namespace vefs
             for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
               {
                 const unsigned int c = fe.system_to_component_index(i).first;
-                if (c < dim && owned_u.is_element(dof_indices[i]))
+                if (c < dim && dof_indices[i] < owned_u.size() &&
+                    owned_u.is_element(dof_indices[i]))
                   constant_modes[c][owned_u.index_within_set(dof_indices[i])] =
                     true;
               }
@@ -724,13 +690,16 @@ namespace vefs
     // differs in a few unknowns only.
     BlockVector distributed(owned_partitioning, comm);
     if (contact_iteration)
-      {
-        for (unsigned int b = 0; b < distributed.n_blocks(); ++b)
-          for (const auto i : distributed.block(b).locally_owned_elements())
-            distributed.block(b)(i) = solution.block(b)(i);
-        distributed.compress(VectorOperation::insert);
-      }
-    constraints.set_zero(distributed);
+      distributed = flow_solution;
+    // The constrained unknowns of the flow space are zero in the Krylov
+    // space (AffineConstraints::set_zero() would look for the interpolated
+    // ones in it too).
+    const types::global_dof_index n_flow = numbering.n_flow_dofs();
+    for (const auto &line : constraints.get_lines())
+      if (line.index < n_flow &&
+          dof_handler.locally_owned_dofs().is_element(line.index))
+        distributed(line.index) = 0;
+    distributed.compress(VectorOperation::insert);
     contact.set_zero(distributed);
     const double rhs_norm = system_rhs.l2_norm();
     // An overflowing right-hand side would make the tolerance infinite and
@@ -769,13 +738,20 @@ namespace vefs
     // before the constraints that interpolate from them (read from the
     // ghosted solution).
     contact.set_zero(distributed);
-    solution = distributed;
-    constraint_distribution.distribute(solution, distributed);
     if (!std::isfinite(distributed.l2_norm()))
       throw SolverError("the Stokes solution is not finite; check "
                         "'Gravity', the 'Walls' velocities and 'Time/Time "
                         "step'");
-    solution = distributed;
+    flow_solution = distributed;
+
+    // Into all parts: the constrained unknowns, the interpolated ones
+    // among them, from the flow space's own.
+    BlockVector all_parts(owned_parts, comm);
+    for (unsigned int b = 0; b < 2; ++b)
+      all_parts.block(b) = distributed.block(b);
+    solution = all_parts;
+    constraint_distribution.distribute(solution, all_parts);
+    solution = all_parts;
     return control.last_step();
   }
 

@@ -24,9 +24,11 @@ namespace vefs
    * coarser than the transport, while the liquid domain is still cut out of
    * the finest cells (the seed solved its flow on 5 mm cells over a 1 mm
    * transport grid). The finest cells keep their own degrees of freedom;
-   * those at nodes that are not their parent's vertices are constrained to
-   * the parent's Q1 interpolant, so that assembly, contact and output work
-   * on the cells as before.
+   * those at nodes that are not their parent's vertices are interpolated
+   * from the parent's: numbered after the flow space's own (FlowNumbering),
+   * they are no rows of the matrices and no entries of the Krylov vectors,
+   * and after a solve they hold the parent's Q1 interpolant, so that the
+   * transport, contact and output read the cells as before.
    *
    * p4est keeps the children of a parent whose children are all active on
    * one rank, so a parent's element lies within one rank's cells. A ghost
@@ -133,6 +135,16 @@ namespace vefs
     {
       return far_dofs;
     }
+
+    /**
+     * The flow unknowns of owned and ghost cells on their parent (active FE
+     * index @p fe_index) at nodes that are not vertices of the parent: those
+     * make_interpolation_constraints() constrains. Of the size of
+     * @p dof_handler's unknowns.
+     */
+    IndexSet
+    interpolated_dofs(const DoFHandler<dim> &dof_handler,
+                      const unsigned int     fe_index) const;
 
     /**
      * Into @p constraints: every flow unknown of a cell on its parent at a

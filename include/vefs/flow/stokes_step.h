@@ -15,6 +15,7 @@
 #include <vefs/fields/transported_fields.h>
 #include <vefs/flow/contact_walls.h>
 #include <vefs/flow/flow_elements.h>
+#include <vefs/flow/flow_numbering.h>
 #include <vefs/flow/flow_parameters.h>
 #include <vefs/flow/ghost_penalty.h>
 #include <vefs/stress/rheology.h>
@@ -146,7 +147,7 @@ namespace vefs
     types::global_dof_index
     n_dofs() const
     {
-      return dof_handler.n_dofs() - n_interpolated;
+      return numbering.n_flow_dofs();
     }
 
     const DoFHandler<dim> &
@@ -196,9 +197,10 @@ namespace vefs
     const MPI_Comm           comm;
     hp::FECollection<dim>    fe_collection;
     DoFHandler<dim>          dof_handler;
-    std::vector<IndexSet>    owned_partitioning;
-    std::vector<IndexSet>    relevant_partitioning;
-    IndexSet                 relevant_dofs;
+    /** Of the flow system's blocks (FlowNumbering::flow_blocks()). */
+    std::vector<IndexSet> owned_partitioning;
+    std::vector<IndexSet> relevant_partitioning;
+    IndexSet              relevant_dofs;
     /**
      * The unknowns whose constraints and matrix rows this rank touches: the
      * locally relevant ones and, with 'Flow cells = parents', the far
@@ -228,14 +230,20 @@ namespace vefs
     AffineConstraints<double> pressure_constraints;
     BlockVector               system_rhs;
     BlockVector               lumped_pressure_mass;
-    BlockVector               solution;
-    const Rheology<dim>      &rheology;
-    ContactWalls<dim>         contact;
-    FlowElements<dim>         elements;
+    /** The last solve's, in the flow space's own unknowns (owned). */
+    BlockVector flow_solution;
+    /** The owned unknowns of the four parts of FlowNumbering. */
+    std::vector<IndexSet> owned_parts;
+    /** All parts (FlowNumbering), ghosted: what cells read. */
+    BlockVector          solution;
+    const Rheology<dim> &rheology;
+    ContactWalls<dim>    contact;
+    FlowElements<dim>    elements;
     /** The unknowns of the finest cells interpolated from their parent's
      * (FlowElements), a part of every other set of constraints. */
     AffineConstraints<double> interpolation;
-    types::global_dof_index   n_interpolated = 0;
+    /** The flow space's own unknowns first, the interpolated ones after. */
+    FlowNumbering numbering;
     /** Time of the step being solved (for the wall velocities). */
     double time = 0;
     /** The liquid of the step being solved, from setup(). */

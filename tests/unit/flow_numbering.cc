@@ -1,0 +1,218 @@
+// renumber_flow_dofs() (flow_numbering.h) on the unit square and cube,
+// cells of level 2 with those whose centre has x < 0.5 refined to level 3,
+// the flow's Q1 velocity and pressure on every cell:
+// - 'Flow cells = parents': the interpolated dofs are exactly those at the
+//   nodes of level-3 cells that are not nodes of the level-2 lattice
+//   (counted by brute force over the vertices' coordinates), (dim + 1)
+//   per node; they, and only they, are numbered from n_flow_dofs() on, the
+//   velocities in parts 0 and 2 and the pressures in parts 1 and 3 as the
+//   cells' elements say; the new numbers are a permutation of 0..n-1 (the
+//   owned sets of the ranks partition them).
+// - 'Flow cells = finest': no interpolated dofs, and the numbering is
+//   deal.II's DoFRenumbering::component_wise() itself, dof by dof.
+// Exact integers: 1 and 2 ranks print the same; the nodes off the lattice
+// are 30 in 2D and 330 in 3D.
+
+#include "unit_test.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_renumbering.h>
+#include <deal.II/fe/fe_nothing.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/hp/fe_collection.h>
+
+#include <vefs/flow/flow_elements.h>
+#include <vefs/flow/flow_numbering.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <set>
+#include <vector>
+
+using namespace dealii;
+
+namespace
+{
+  template <int dim>
+  void
+  make_mesh(parallel::distributed::Triangulation<dim> &triangulation)
+  {
+    GridGenerator::hyper_cube(triangulation, 0, 1);
+    triangulation.refine_global(2);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->center()[0] < 0.5)
+        cell->set_refine_flag();
+    triangulation.execute_coarsening_and_refinement();
+  }
+
+  template <int dim>
+  hp::FECollection<dim>
+  flow_elements_collection()
+  {
+    hp::FECollection<dim> collection;
+    collection.push_back(FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1));
+    collection.push_back(
+      FESystem<dim>(FE_Nothing<dim>(), dim, FE_Nothing<dim>(), 1));
+    return collection;
+  }
+
+  /** Whether @p p is a node of the lattice of spacing 1/n. */
+  template <int dim>
+  bool
+  on_lattice(const Point<dim> &p, const double n)
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      if (std::abs(p[d] * n - std::round(p[d] * n)) > 1e-10)
+        return false;
+    return true;
+  }
+
+  template <int dim>
+  void
+  check_parents(std::ostream &out)
+  {
+    const MPI_Comm                            comm = MPI_COMM_WORLD;
+    parallel::distributed::Triangulation<dim> triangulation(comm);
+    make_mesh(triangulation);
+    const hp::FECollection<dim> collection = flow_elements_collection<dim>();
+    DoFHandler<dim>             dof_handler(triangulation);
+    dof_handler.distribute_dofs(collection);
+
+    vefs::FlowParameters parameters;
+    parameters.flow_on_parents = true;
+    const vefs::FlowElements<dim> elements(parameters, 3);
+    const vefs::FlowNumbering     numbering =
+      vefs::renumber_flow_dofs(dof_handler, elements, 0);
+
+    // The nodes off the level-2 lattice, from the owned cells: all ranks.
+    std::set<std::array<double, dim>> fine_nodes;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->level() == 3)
+        for (const unsigned int v : cell->vertex_indices())
+          if (!on_lattice(cell->vertex(v), 4.))
+            {
+              std::array<double, dim> x;
+              for (unsigned int d = 0; d < dim; ++d)
+                x[d] = std::round(cell->vertex(v)[d] * 8.);
+              fine_nodes.insert(x);
+            }
+    std::vector<double> coordinates;
+    for (const auto &x : fine_nodes)
+      coordinates.insert(coordinates.end(), x.begin(), x.end());
+    std::set<std::array<double, dim>> all_fine_nodes;
+    for (const auto &rank : Utilities::MPI::all_gather(comm, coordinates))
+      for (unsigned int i = 0; i < rank.size(); i += dim)
+        {
+          std::array<double, dim> x;
+          std::copy(rank.begin() + i, rank.begin() + i + dim, x.begin());
+          all_fine_nodes.insert(x);
+        }
+
+    const std::string name = std::to_string(dim) + "D, parents: ";
+    // 2D: 5 x 9 level-3 nodes in x <= 0.5, 3 x 5 of them on the level-2
+    // lattice; 3D: 5 x 9 x 9 and 3 x 5 x 5.
+    out << name << "nodes off the coarse lattice: " << all_fine_nodes.size()
+        << '\n';
+    out << name << "interpolated velocities - dim x nodes off the coarse "
+        << "lattice: "
+        << static_cast<long>(numbering.n_dofs_of_part[2]) -
+             static_cast<long>(dim * all_fine_nodes.size())
+        << '\n';
+    out << name << "interpolated pressures - nodes off the coarse lattice: "
+        << static_cast<long>(numbering.n_dofs_of_part[3]) -
+             static_cast<long>(all_fine_nodes.size())
+        << '\n';
+    out << name << "parts add up to the dofs: "
+        << (numbering.start(4) == dof_handler.n_dofs() ? "yes" : "NO") << '\n';
+
+    // Each dof of an owned cell in its part: by its node and component.
+    unsigned int                         misplaced = 0;
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto &fe = cell->get_fe();
+          dofs.resize(fe.n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            {
+              const auto [component, vertex] = fe.system_to_component_index(i);
+              const bool interpolated =
+                cell->level() == 3 && !on_lattice(cell->vertex(vertex), 4.);
+              const unsigned int part =
+                (component < dim ? 0 : 1) + (interpolated ? 2 : 0);
+              if (dofs[i] < numbering.start(part) ||
+                  dofs[i] >= numbering.start(part + 1))
+                ++misplaced;
+            }
+        }
+    out << name
+        << "dofs outside their part: " << Utilities::MPI::sum(misplaced, comm)
+        << '\n';
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    const bool      partition =
+      Utilities::MPI::sum(owned.n_elements(), comm) == dof_handler.n_dofs() &&
+      owned.size() == dof_handler.n_dofs();
+    out << name << "owned sets partition 0..n-1: "
+        << (Utilities::MPI::logical_or(!partition, comm) ? "NO" : "yes")
+        << '\n';
+  }
+
+  template <int dim>
+  void
+  check_finest(std::ostream &out)
+  {
+    const MPI_Comm                            comm = MPI_COMM_WORLD;
+    parallel::distributed::Triangulation<dim> triangulation(comm);
+    make_mesh(triangulation);
+    const hp::FECollection<dim> collection = flow_elements_collection<dim>();
+    DoFHandler<dim> renumbered(triangulation), reference(triangulation);
+    renumbered.distribute_dofs(collection);
+    reference.distribute_dofs(collection);
+
+    vefs::FlowParameters parameters;
+    parameters.flow_on_parents = false;
+    const vefs::FlowElements<dim> elements(parameters, 3);
+    const vefs::FlowNumbering     numbering =
+      vefs::renumber_flow_dofs(renumbered, elements, 0);
+    std::vector<unsigned int> block_component(dim + 1, 0);
+    block_component[dim] = 1;
+    DoFRenumbering::component_wise(reference, block_component);
+
+    unsigned int                         different = 0;
+    std::vector<types::global_dof_index> a, b;
+    auto                                 cell = renumbered.begin_active();
+    for (auto other = reference.begin_active(); other != reference.end();
+         ++cell, ++other)
+      if (cell->is_locally_owned())
+        {
+          a.resize(cell->get_fe().n_dofs_per_cell());
+          b.resize(a.size());
+          cell->get_dof_indices(a);
+          other->get_dof_indices(b);
+          different += (a != b);
+        }
+    const std::string name = std::to_string(dim) + "D, finest: ";
+    out << name << "interpolated dofs: "
+        << numbering.n_dofs_of_part[2] + numbering.n_dofs_of_part[3] << '\n';
+    out << name << "cells numbered unlike component_wise(): "
+        << Utilities::MPI::sum(different, comm) << '\n';
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  return unit_test::run(argc, argv, [](std::ostream &out) {
+    check_parents<2>(out);
+    check_parents<3>(out);
+    check_finest<2>(out);
+    check_finest<3>(out);
+  });
+}
