@@ -42,7 +42,7 @@ namespace vefs
         const auto n_per_block =
           DoFTools::count_dofs_per_fe_block(dof_handler, block_component);
         FlowNumbering numbering;
-        numbering.n_dofs_of_part = {n_per_block[0], n_per_block[1], 0, 0};
+        numbering.n_dofs_of_part = {{n_per_block[0], n_per_block[1], 0, 0}};
         return numbering;
       }
 
