@@ -618,10 +618,10 @@ namespace vefs
     velocity_data.elliptic              = true;
     velocity_data.higher_order_elements = false;
     velocity_data.smoother_sweeps       = parameters.solver.amg_smoother_sweeps;
-    // With the flow on the parents the hierarchy of 0.02 is the weaker one
-    // (why, not found): first step of the 3D ball at 2.5 mm, 22 Krylov
-    // iterations with 0.02 against 17 with 0.05 (the finest cells: 15 and
-    // 14; on 10 mm parents, 1 rank: 26 and 18).
+    // With the flow on the parents: the first 10 steps of the 3D ball at
+    // 2.5 mm take 119 Krylov iterations with 0.05, 121 with 0.02 (before the
+    // interpolated unknowns left the matrix, each a row of its own
+    // diagonal, the first step alone took 17 and 22).
     velocity_data.aggregation_threshold =
       parameters.flow.flow_on_parents ? 0.05 : 0.02;
     velocity_data.constant_modes = constant_modes;
