@@ -234,16 +234,15 @@ namespace vefs
   }
 
   template <int dim>
-  IndexSet
-  FlowElements<dim>::interpolated_dofs(const DoFHandler<dim> &dof_handler,
-                                       const unsigned int     fe_index) const
+  template <typename VertexFunction>
+  void
+  FlowElements<dim>::for_each_interpolated_vertex(
+    const DoFHandler<dim> &dof_handler,
+    const unsigned int     fe_index,
+    const VertexFunction  &function) const
   {
-    IndexSet interpolated(dof_handler.n_dofs());
     if (!on_parents)
-      return interpolated;
-    const unsigned int n_components =
-      dof_handler.get_fe_collection()[fe_index].n_components();
-    std::vector<types::global_dof_index> dofs;
+      return;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial() && cell->active_fe_index() == fe_index &&
           on_parent(cell))
@@ -251,12 +250,30 @@ namespace vefs
           const unsigned int child =
             cell->parent()->child_iterator_to_index(cell);
           for (const unsigned int v : cell->vertex_indices())
+            // A vertex of the parent is its own unknown.
             if (child_vertex_weights[child][v].size() > 1)
-              for (unsigned int c = 0; c < n_components; ++c)
-                dofs.push_back(cell->vertex_dof_index(v, c, fe_index));
+              function(cell, v, child_vertex_weights[child][v]);
         }
+  }
+
+  template <int dim>
+  IndexSet
+  FlowElements<dim>::interpolated_dofs(const DoFHandler<dim> &dof_handler,
+                                       const unsigned int     fe_index) const
+  {
+    const unsigned int n_components =
+      dof_handler.get_fe_collection()[fe_index].n_components();
+    std::vector<types::global_dof_index> dofs;
+    for_each_interpolated_vertex(
+      dof_handler,
+      fe_index,
+      [&](const auto &cell, const unsigned int v, const auto &) {
+        for (unsigned int c = 0; c < n_components; ++c)
+          dofs.push_back(cell->vertex_dof_index(v, c, fe_index));
+      });
     std::sort(dofs.begin(), dofs.end());
     dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+    IndexSet interpolated(dof_handler.n_dofs());
     interpolated.add_indices(dofs.begin(), dofs.end());
     interpolated.compress();
     return interpolated;
@@ -269,36 +286,25 @@ namespace vefs
     const unsigned int         fe_index,
     AffineConstraints<double> &constraints) const
   {
-    if (!on_parents)
-      return;
     const unsigned int n_components =
       dof_handler.get_fe_collection()[fe_index].n_components();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (!cell->is_artificial() && cell->active_fe_index() == fe_index &&
-          on_parent(cell))
-        {
-          const unsigned int child =
-            cell->parent()->child_iterator_to_index(cell);
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              const auto &weights = child_vertex_weights[child][v];
-              // A vertex of the parent is its own unknown.
-              if (weights.size() == 1)
-                continue;
-              for (unsigned int c = 0; c < n_components; ++c)
-                {
-                  const types::global_dof_index dof =
-                    cell->vertex_dof_index(v, c, fe_index);
-                  if (constraints.is_constrained(dof))
-                    continue;
-                  constraints.add_line(dof);
-                  for (const auto &[vertex, weight] : weights)
-                    constraints.add_entry(dof,
-                                          parent_vertex_dof(cell, vertex, c),
-                                          weight);
-                }
-            }
-        }
+    for_each_interpolated_vertex(
+      dof_handler,
+      fe_index,
+      [&](const auto &cell, const unsigned int v, const auto &weights) {
+        for (unsigned int c = 0; c < n_components; ++c)
+          {
+            const types::global_dof_index dof =
+              cell->vertex_dof_index(v, c, fe_index);
+            if (constraints.is_constrained(dof))
+              continue;
+            constraints.add_line(dof);
+            for (const auto &[vertex, weight] : weights)
+              constraints.add_entry(dof,
+                                    parent_vertex_dof(cell, vertex, c),
+                                    weight);
+          }
+      });
   }
 
   template class FlowElements<2>;

@@ -217,6 +217,17 @@ namespace vefs
     }
 
   private:
+    /**
+     * @p function(cell, v, weights) for every vertex v that is not a vertex
+     * of the parent, of every owned or ghost cell on its parent with active
+     * FE index @p fe_index; weights: vertex_weights() there.
+     */
+    template <typename VertexFunction>
+    void
+    for_each_interpolated_vertex(const DoFHandler<dim> &dof_handler,
+                                 const unsigned int     fe_index,
+                                 const VertexFunction  &function) const;
+
     /** The non-zero weights (vertex, weight) of the parent's vertices at
      * vertex v of child c: [c][v]. */
     const ChildVertexWeights<dim> child_vertex_weights;
