@@ -232,7 +232,7 @@ namespace vefs
     BlockVector               lumped_pressure_mass;
     /** The last solve's, in the flow space's own unknowns (owned). */
     BlockVector flow_solution;
-    /** The owned unknowns of the four parts of FlowNumbering. */
+    /** The owned unknowns of FlowNumbering::all_parts(). */
     std::vector<IndexSet> owned_parts;
     /** All parts (FlowNumbering), ghosted: what cells read. */
     BlockVector          solution;
