@@ -231,27 +231,32 @@ namespace vefs
                                               comm);
     constraints.close();
 
-    // Pressures are constrained by pressures only (hanging nodes,
-    // interpolation on the parents); the flow space's own unknowns by its
-    // own only: the interpolated ones are not in its matrices.
+    // The flow space's own unknowns are constrained by its own only (the
+    // interpolated ones are not in its matrices), pressures by pressures
+    // only (hanging nodes, interpolation on the parents). The owned
+    // constrained ones are kept for the solves, which start from zero there.
     const types::global_dof_index n_u    = numbering.n_velocities();
     const types::global_dof_index n_flow = numbering.n_flow_dofs();
+    const IndexSet               &owned  = dof_handler.locally_owned_dofs();
     pressure_constraints.clear();
     pressure_constraints.reinit(touched_partitioning[1]);
+    owned_constrained_flow_dofs.clear();
     for (const auto &line : constraints.get_lines())
       if (line.index < n_flow)
-        for (const auto &entry : line.entries)
-          AssertThrow(entry.first < n_flow, ExcInternalError());
-    for (const auto &line : constraints.get_lines())
-      if (line.index >= n_u && line.index < n_flow)
         {
-          pressure_constraints.add_line(line.index - n_u);
+          if (owned.is_element(line.index))
+            owned_constrained_flow_dofs.push_back(line.index);
+          const bool pressure = line.index >= n_u;
+          if (pressure)
+            pressure_constraints.add_line(line.index - n_u);
           for (const auto &[column, weight] : line.entries)
             {
-              AssertThrow(column >= n_u, ExcInternalError());
-              pressure_constraints.add_entry(line.index - n_u,
-                                             column - n_u,
-                                             weight);
+              AssertThrow(column < n_flow && (column >= n_u) == pressure,
+                          ExcInternalError());
+              if (pressure)
+                pressure_constraints.add_entry(line.index - n_u,
+                                               column - n_u,
+                                               weight);
             }
         }
     pressure_constraints.close();
@@ -317,11 +322,11 @@ namespace vefs
     flow_solution.reinit(owned_partitioning, comm);
     // All parts, the interpolated too; touched: the contact reactions of
     // faces read far parent vertices.
-    owned_parts = numbering.all_parts(dof_handler.locally_owned_dofs());
+    const std::vector<IndexSet> owned_parts =
+      numbering.all_parts(dof_handler.locally_owned_dofs());
+    owned_solution.reinit(owned_parts, comm);
     solution.reinit(owned_parts, numbering.all_parts(touched_dofs), comm);
-    constraint_distribution.reinit(constraints,
-                                   BlockVector(owned_parts, comm),
-                                   solution);
+    constraint_distribution.reinit(constraints, owned_solution, solution);
   }
 
   template <int dim>
@@ -694,11 +699,8 @@ namespace vefs
     // The constrained unknowns of the flow space are zero in the Krylov
     // space (AffineConstraints::set_zero() would look for the interpolated
     // ones in it too).
-    const types::global_dof_index n_flow = numbering.n_flow_dofs();
-    for (const auto &line : constraints.get_lines())
-      if (line.index < n_flow &&
-          dof_handler.locally_owned_dofs().is_element(line.index))
-        distributed(line.index) = 0;
+    for (const auto dof : owned_constrained_flow_dofs)
+      distributed(dof) = 0;
     distributed.compress(VectorOperation::insert);
     contact.set_zero(distributed);
     const double rhs_norm = system_rhs.l2_norm();
@@ -746,12 +748,11 @@ namespace vefs
 
     // Into all parts: the constrained unknowns, the interpolated ones
     // among them, from the flow space's own.
-    BlockVector all_parts(owned_parts, comm);
     for (unsigned int b = 0; b < 2; ++b)
-      all_parts.block(b) = distributed.block(b);
-    solution = all_parts;
-    constraint_distribution.distribute(solution, all_parts);
-    solution = all_parts;
+      owned_solution.block(b) = distributed.block(b);
+    solution = owned_solution;
+    constraint_distribution.distribute(solution, owned_solution);
+    solution = owned_solution;
     return control.last_step();
   }
 

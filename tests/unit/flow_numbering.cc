@@ -39,28 +39,43 @@ using namespace dealii;
 
 namespace
 {
+  /**
+   * The unit square or cube, level 2, the cells with centre x < 0.5
+   * refined to level 3; the flow's elements on it as StokesStep's: Q1^(dim
+   * + 1), and FE_Nothing (not used here).
+   */
   template <int dim>
-  void
-  make_mesh(parallel::distributed::Triangulation<dim> &triangulation)
+  struct FlowMesh
   {
-    GridGenerator::hyper_cube(triangulation, 0, 1);
-    triangulation.refine_global(2);
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->center()[0] < 0.5)
-        cell->set_refine_flag();
-    triangulation.execute_coarsening_and_refinement();
-  }
+    FlowMesh()
+      : triangulation(MPI_COMM_WORLD)
+    {
+      GridGenerator::hyper_cube(triangulation, 0, 1);
+      triangulation.refine_global(2);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->center()[0] < 0.5)
+          cell->set_refine_flag();
+      triangulation.execute_coarsening_and_refinement();
+      collection.push_back(FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1));
+      collection.push_back(
+        FESystem<dim>(FE_Nothing<dim>(), dim, FE_Nothing<dim>(), 1));
+    }
 
-  template <int dim>
-  hp::FECollection<dim>
-  flow_elements_collection()
-  {
-    hp::FECollection<dim> collection;
-    collection.push_back(FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1));
-    collection.push_back(
-      FESystem<dim>(FE_Nothing<dim>(), dim, FE_Nothing<dim>(), 1));
-    return collection;
-  }
+    /** The flow's dofs on @p dof_handler (of this mesh), renumbered by
+     * renumber_flow_dofs() with 'Flow cells = parents' or 'finest'. */
+    vefs::FlowNumbering
+    number(DoFHandler<dim> &dof_handler, const bool on_parents) const
+    {
+      dof_handler.distribute_dofs(collection);
+      vefs::FlowParameters parameters;
+      parameters.flow_on_parents = on_parents;
+      const vefs::FlowElements<dim> elements(parameters, 3);
+      return vefs::renumber_flow_dofs(dof_handler, elements, 0);
+    }
+
+    parallel::distributed::Triangulation<dim> triangulation;
+    hp::FECollection<dim>                     collection;
+  };
 
   /** Whether @p p is a node of the lattice of spacing 1/n. */
   template <int dim>
@@ -77,18 +92,10 @@ namespace
   void
   check_parents(std::ostream &out)
   {
-    const MPI_Comm                            comm = MPI_COMM_WORLD;
-    parallel::distributed::Triangulation<dim> triangulation(comm);
-    make_mesh(triangulation);
-    const hp::FECollection<dim> collection = flow_elements_collection<dim>();
-    DoFHandler<dim>             dof_handler(triangulation);
-    dof_handler.distribute_dofs(collection);
-
-    vefs::FlowParameters parameters;
-    parameters.flow_on_parents = true;
-    const vefs::FlowElements<dim> elements(parameters, 3);
-    const vefs::FlowNumbering     numbering =
-      vefs::renumber_flow_dofs(dof_handler, elements, 0);
+    const MPI_Comm            comm = MPI_COMM_WORLD;
+    const FlowMesh<dim>       mesh;
+    DoFHandler<dim>           dof_handler(mesh.triangulation);
+    const vefs::FlowNumbering numbering = mesh.number(dof_handler, true);
 
     // The nodes off the level-2 lattice, from the owned cells: all ranks.
     std::set<std::array<double, dim>> fine_nodes;
@@ -168,19 +175,12 @@ namespace
   void
   check_finest(std::ostream &out)
   {
-    const MPI_Comm                            comm = MPI_COMM_WORLD;
-    parallel::distributed::Triangulation<dim> triangulation(comm);
-    make_mesh(triangulation);
-    const hp::FECollection<dim> collection = flow_elements_collection<dim>();
-    DoFHandler<dim> renumbered(triangulation), reference(triangulation);
-    renumbered.distribute_dofs(collection);
-    reference.distribute_dofs(collection);
-
-    vefs::FlowParameters parameters;
-    parameters.flow_on_parents = false;
-    const vefs::FlowElements<dim> elements(parameters, 3);
-    const vefs::FlowNumbering     numbering =
-      vefs::renumber_flow_dofs(renumbered, elements, 0);
+    const MPI_Comm            comm = MPI_COMM_WORLD;
+    const FlowMesh<dim>       mesh;
+    DoFHandler<dim>           renumbered(mesh.triangulation);
+    const vefs::FlowNumbering numbering = mesh.number(renumbered, false);
+    DoFHandler<dim>           reference(mesh.triangulation);
+    reference.distribute_dofs(mesh.collection);
     std::vector<unsigned int> block_component(dim + 1, 0);
     block_component[dim] = 1;
     DoFRenumbering::component_wise(reference, block_component);

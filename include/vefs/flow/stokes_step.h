@@ -232,8 +232,12 @@ namespace vefs
     BlockVector               lumped_pressure_mass;
     /** The last solve's, in the flow space's own unknowns (owned). */
     BlockVector flow_solution;
-    /** The owned unknowns of FlowNumbering::all_parts(). */
-    std::vector<IndexSet> owned_parts;
+    /** All parts (FlowNumbering::all_parts()), owned: each solve fills it
+     * and distributes the constraints into it. */
+    BlockVector owned_solution;
+    /** The owned unknowns of the flow space that the constraints constrain:
+     * zero in the Krylov space (set up with the constraints). */
+    std::vector<types::global_dof_index> owned_constrained_flow_dofs;
     /** All parts (FlowNumbering), ghosted: what cells read. */
     BlockVector          solution;
     const Rheology<dim> &rheology;
