@@ -210,11 +210,11 @@ namespace vefs
       "cells only: it needs 'linear' for 'Level set interpolation', "
       "'Velocity interpolation' and 'Stress interpolation' (in "
       "'Transport')");
-    require(!flow.flow_on_parents || cavity.periodic_directions().empty(),
+    require(flow.flow_level_offset == 0 || cavity.periodic_directions().empty(),
             "Flow/Flow cells",
             "'parents' is not implemented with periodic walls: use "
             "'finest'");
-    require(!flow.flow_on_parents ||
+    require(flow.flow_level_offset == 0 ||
               (mesh.max_level > 0 && mesh.bulk_level + 1 >= mesh.max_level),
             "Flow/Flow cells",
             "'parents' needs 'Mesh refinement/Bulk level' = 'Mesh "

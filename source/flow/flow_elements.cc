@@ -37,21 +37,59 @@ namespace vefs
   template <int dim>
   FlowElements<dim>::FlowElements(const FlowParameters &parameters,
                                   const unsigned int    max_level)
-    : child_vertex_weights(make_child_vertex_weights<dim>())
-    , on_parents(parameters.flow_on_parents)
-    , finest_level(max_level)
+    : level_offset(parameters.flow_level_offset)
+    , flow_level(static_cast<int>(max_level) -
+                 static_cast<int>(parameters.flow_level_offset))
     , all_components(dim + 1)
   {
+    AssertThrow(flow_level >= 0, ExcInternalError());
+    for (unsigned int depth = 1; depth <= level_offset; ++depth)
+      descendant_vertex_weights.push_back(
+        make_descendant_vertex_weights<dim>(depth));
     std::iota(all_components.begin(), all_components.end(), 0);
   }
 
   template <int dim>
+  const std::vector<std::pair<unsigned int, double>> &
+  FlowElements<dim>::vertex_weights(const CellIterator &cell,
+                                    const unsigned int  v) const
+  {
+    // The cell's place in its element's lattice: bit d of each child number
+    // on the way up is one binary digit of its index in direction d.
+    const unsigned int            depth = cell->level() - flow_level;
+    std::array<unsigned int, dim> index{};
+    CellIterator                  ancestor = cell;
+    for (unsigned int digit = 0; digit < depth; ++digit)
+      {
+        const unsigned int child =
+          ancestor->parent()->child_iterator_to_index(ancestor);
+        for (unsigned int d = 0; d < dim; ++d)
+          index[d] |= ((child >> d) & 1) << digit;
+        ancestor = ancestor->parent();
+      }
+    unsigned int position = 0;
+    for (unsigned int d = dim; d-- > 0;)
+      position = (position << depth) | index[d];
+    return descendant_vertex_weights[depth - 1][position][v];
+  }
+
+  template <int dim>
+  bool
+  FlowElements<dim>::represents_element(const CellIterator &cell) const
+  {
+    for (const auto &other : cells_of(element(cell)))
+      if (other->is_locally_owned())
+        return other == cell;
+    return false;
+  }
+
+  template <int dim>
   void
-  FlowElements<dim>::add_restricted_to_parent(
+  FlowElements<dim>::add_restricted_to_element(
     const FiniteElement<dim>        &fe,
-    const unsigned int               child,
+    const CellIterator              &cell,
     const FullMatrix<double>        &fine,
-    FullMatrix<double>              &parent,
+    FullMatrix<double>              &coarse,
     const std::vector<unsigned int> &components) const
   {
     constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
@@ -70,7 +108,7 @@ namespace vefs
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
           const unsigned int j = dof_of[component][v];
-          for (const auto &[vertex, weight] : child_vertex_weights[child][v])
+          for (const auto &[vertex, weight] : vertex_weights(cell, v))
             {
               const unsigned int J = dof_of[component][vertex];
               for (const unsigned int i : rows)
@@ -81,40 +119,39 @@ namespace vefs
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
           const unsigned int i = dof_of[component][v];
-          for (const auto &[vertex, weight] : child_vertex_weights[child][v])
+          for (const auto &[vertex, weight] : vertex_weights(cell, v))
             {
               const unsigned int I = dof_of[component][vertex];
               for (const unsigned int j : rows)
-                parent(I, j) += weight * right(i, j);
+                coarse(I, j) += weight * right(i, j);
             }
         }
   }
 
   template <int dim>
   void
-  FlowElements<dim>::add_restricted_to_parent(const FiniteElement<dim> &fe,
-                                              const unsigned int        child,
-                                              const FullMatrix<double> &fine,
-                                              FullMatrix<double> &parent) const
+  FlowElements<dim>::add_restricted_to_element(const FiniteElement<dim> &fe,
+                                               const CellIterator       &cell,
+                                               const FullMatrix<double> &fine,
+                                               FullMatrix<double> &coarse) const
   {
-    add_restricted_to_parent(fe, child, fine, parent, all_components);
+    add_restricted_to_element(fe, cell, fine, coarse, all_components);
   }
 
   template <int dim>
   void
-  FlowElements<dim>::add_restricted_to_parent(const FiniteElement<dim> &fe,
-                                              const unsigned int        child,
-                                              const Vector<double>     &fine,
-                                              Vector<double> &parent) const
+  FlowElements<dim>::add_restricted_to_element(const FiniteElement<dim> &fe,
+                                               const CellIterator       &cell,
+                                               const Vector<double>     &fine,
+                                               Vector<double> &coarse) const
   {
     const unsigned int n      = fe.n_dofs_per_cell();
     const auto         dof_of = dofs_by_component_and_vertex(fe);
     for (unsigned int i = 0; i < n; ++i)
       {
-        const auto [component, child_vertex] = fe.system_to_component_index(i);
-        for (const auto &[vertex, weight] :
-             child_vertex_weights[child][child_vertex])
-          parent(dof_of[component][vertex]) += weight * fine(i);
+        const auto [component, cell_vertex] = fe.system_to_component_index(i);
+        for (const auto &[vertex, weight] : vertex_weights(cell, cell_vertex))
+          coarse(dof_of[component][vertex]) += weight * fine(i);
       }
   }
 
@@ -124,42 +161,40 @@ namespace vefs
                               const LiquidDomain<dim> &domain)
   {
     this->domain = &domain;
-    if (!on_parents)
+    if (level_offset == 0)
       return;
     element_locations.assign(dof_handler.get_triangulation().n_active_cells(),
                              Location::empty);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          if (!on_parent(cell))
-            element_locations[cell->active_cell_index()] =
-              domain.location(cell);
-          // A family once, from its first child.
-          else if (cell->parent()->child(0) == cell)
+          if (!on_coarser_element(cell))
             {
-              const auto parent   = cell->parent();
-              bool       all_full = true, all_empty = true;
-              for (unsigned int c = 0; c < parent->n_children(); ++c)
-                {
-                  // Children of the finest level are active.
-                  const typename Triangulation<dim>::active_cell_iterator
-                    child = parent->child(c);
-                  AssertThrow(child->is_locally_owned(),
-                              ExcMessage("The children of a parent are not "
-                                         "all on one rank; 'Flow cells = "
-                                         "parents' needs them there."));
-                  all_full =
-                    all_full && domain.location(child) == Location::full;
-                  all_empty =
-                    all_empty && domain.location(child) == Location::empty;
-                }
-              const Location location = all_full    ? Location::full
-                                        : all_empty ? Location::empty
-                                                    : Location::cut;
-              for (unsigned int c = 0; c < parent->n_children(); ++c)
-                element_locations[parent->child(c)->active_cell_index()] =
-                  location;
+              element_locations[cell->active_cell_index()] =
+                domain.location(cell);
+              continue;
             }
+          const auto cells = cells_of(element(cell));
+          // An element once, from its first cell.
+          if (cells.front() != cell)
+            continue;
+          bool all_full = true, all_empty = true;
+          for (const auto &other : cells)
+            {
+              AssertThrow(other->is_locally_owned(),
+                          ExcMessage("The cells of a flow element are not "
+                                     "all on one rank; 'Flow/Flow cells' "
+                                     "coarser than the finest needs them "
+                                     "there."));
+              all_full = all_full && domain.location(other) == Location::full;
+              all_empty =
+                all_empty && domain.location(other) == Location::empty;
+            }
+          const Location location = all_full    ? Location::full
+                                    : all_empty ? Location::empty
+                                                : Location::cut;
+          for (const auto &other : cells)
+            element_locations[other->active_cell_index()] = location;
         }
     GridTools::exchange_cell_data_to_ghosts<unsigned char, DoFHandler<dim>>(
       dof_handler,
@@ -176,13 +211,13 @@ namespace vefs
 
   template <int dim>
   void
-  FlowElements<dim>::exchange_parent_dofs(const DoFHandler<dim> &dof_handler,
-                                          const unsigned int     fe_index,
-                                          const IndexSet        &relevant)
+  FlowElements<dim>::exchange_element_dofs(const DoFHandler<dim> &dof_handler,
+                                           const unsigned int     fe_index,
+                                           const IndexSet        &relevant)
   {
-    ghost_parent_dofs.clear();
+    ghost_element_dofs.clear();
     far_dofs.clear();
-    if (!on_parents)
+    if (level_offset == 0)
       return;
     using Dofs                    = std::vector<types::global_dof_index>;
     const unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
@@ -192,24 +227,25 @@ namespace vefs
       dof_handler,
       [&](const typename DoFHandler<dim>::active_cell_iterator &cell)
         -> std_cxx17::optional<Dofs> {
-        if (cell->active_fe_index() != fe_index || !on_parent(cell))
+        if (cell->active_fe_index() != fe_index || !on_coarser_element(cell))
           return {};
         Dofs dofs(n_vertices * n_components);
-        // Child v holds the parent's vertex v; the children are owned.
+        // The element's cells are owned, its corner cells among them.
         for (unsigned int v = 0; v < n_vertices; ++v)
           for (unsigned int c = 0; c < n_components; ++c)
             dofs[v * n_components + c] =
-              cell->parent()->child(v)->vertex_dof_index(v, c, fe_index);
+              corner_cell(typename DoFHandler<dim>::cell_iterator(cell), v)
+                ->vertex_dof_index(v, c, fe_index);
         return dofs;
       },
       [&](const typename DoFHandler<dim>::active_cell_iterator &cell,
           const Dofs                                           &dofs) {
-        ghost_parent_dofs[cell->active_cell_index()] = dofs;
+        ghost_element_dofs[cell->active_cell_index()] = dofs;
       });
 
     far_dofs.set_size(dof_handler.n_dofs());
     std::vector<types::global_dof_index> far;
-    for (const auto &[index, dofs] : ghost_parent_dofs)
+    for (const auto &[index, dofs] : ghost_element_dofs)
       for (const auto dof : dofs)
         if (!relevant.is_element(dof))
           far.push_back(dof);
@@ -220,16 +256,16 @@ namespace vefs
 
   template <int dim>
   types::global_dof_index
-  FlowElements<dim>::parent_vertex_dof(
+  FlowElements<dim>::element_vertex_dof(
     const typename DoFHandler<dim>::cell_iterator &cell,
     const unsigned int                             v,
     const unsigned int                             c) const
   {
-    const auto sibling = cell->parent()->child(v);
-    if (!sibling->is_artificial())
-      return sibling->vertex_dof_index(v, c, sibling->active_fe_index());
-    const auto dofs = ghost_parent_dofs.find(cell->active_cell_index());
-    AssertThrow(dofs != ghost_parent_dofs.end(), ExcInternalError());
+    const auto corner = corner_cell(cell, v);
+    if (!corner->is_artificial())
+      return corner->vertex_dof_index(v, c, corner->active_fe_index());
+    const auto dofs = ghost_element_dofs.find(cell->active_cell_index());
+    AssertThrow(dofs != ghost_element_dofs.end(), ExcInternalError());
     return dofs->second[v * cell->get_fe().n_components() + c];
   }
 
@@ -241,19 +277,18 @@ namespace vefs
     const unsigned int     fe_index,
     const VertexFunction  &function) const
   {
-    if (!on_parents)
+    if (level_offset == 0)
       return;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial() && cell->active_fe_index() == fe_index &&
-          on_parent(cell))
-        {
-          const unsigned int child =
-            cell->parent()->child_iterator_to_index(cell);
-          for (const unsigned int v : cell->vertex_indices())
-            // A vertex of the parent is its own unknown.
-            if (child_vertex_weights[child][v].size() > 1)
-              function(cell, v, child_vertex_weights[child][v]);
-        }
+          on_coarser_element(cell))
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const auto &weights = vertex_weights(cell, v);
+            // A vertex of the element is its own unknown.
+            if (weights.size() > 1)
+              function(cell, v, weights);
+          }
   }
 
   template <int dim>
@@ -301,7 +336,7 @@ namespace vefs
             constraints.add_line(dof);
             for (const auto &[vertex, weight] : weights)
               constraints.add_entry(dof,
-                                    parent_vertex_dof(cell, vertex, c),
+                                    element_vertex_dof(cell, vertex, c),
                                     weight);
           }
       });

@@ -13,9 +13,9 @@ namespace vefs
       add_selection(
         prm,
         "Flow cells",
-        flow_on_parents,
-        std::vector<std::pair<std::string, bool>>{{"finest", false},
-                                                  {"parents", true}},
+        flow_level_offset,
+        std::vector<std::pair<std::string, unsigned int>>{{"finest", 0},
+                                                          {"parents", 1}},
         "The cells of the flow's velocity and pressure. finest: every cell. "
         "parents: where the mesh is at 'Maximum level', the flow's unknowns "
         "are Q1 on the parents of the finest cells, one level coarser than "

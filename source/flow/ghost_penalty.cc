@@ -157,8 +157,8 @@ namespace vefs
                                          const unsigned int f) {
       const unsigned int direction = f / 2;
       auto               neighbor  = cell->neighbor(f);
-      // A parent beyond: its child next to the face.
-      if (neighbor->has_children())
+      // A coarser element beyond: its cell at the lowest corner of the face.
+      while (neighbor->has_children())
         neighbor = neighbor->child((1 - f % 2) << direction);
       const auto element          = elements.element(cell);
       const auto neighbor_element = elements.element(neighbor);
@@ -188,27 +188,32 @@ namespace vefs
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && elements.location(cell) == Location::cut)
         {
-          if (elements.on_parent(cell))
+          if (elements.on_coarser_element(cell))
             {
-              // A parent's element once, through one of its cells, face by
-              // face of the parent: the faces between its children are
+              // A coarser element once, through one of its cells, face by
+              // face of the element: the faces between its cells are
               // within the element.
-              if (!elements.represents_family(cell))
+              if (!elements.represents_element(cell))
                 continue;
-              const auto parent = cell->parent();
-              for (const unsigned int f : parent->face_indices())
+              const auto element = elements.element(cell);
+              const auto cells   = elements.cells_of(element);
+              for (const unsigned int f : element->face_indices())
                 {
-                  if (parent->at_boundary(f))
+                  if (element->at_boundary(f))
                     continue;
                   const unsigned int direction = f / 2;
-                  const auto         side = parent->child((f % 2) << direction);
-                  if (between_equal_elements(side, f))
-                    visit_between_equal(side, f);
+                  // The element's cells on face f, the first at its
+                  // lowest corner there.
+                  std::vector<typename DoFHandler<dim>::active_cell_iterator>
+                    on_face;
+                  for (const auto &other : cells)
+                    if (!elements.same_element(other, other->neighbor(f)))
+                      on_face.push_back(other);
+                  if (between_equal_elements(on_face.front(), f))
+                    visit_between_equal(on_face.front(), f);
                   else
-                    for (unsigned int child = 0; child < parent->n_children();
-                         ++child)
-                      if (((child >> direction) & 1) == f % 2)
-                        visit_fine_face(parent->child(child), f);
+                    for (const auto &side : on_face)
+                      visit_fine_face(side, f);
                 }
               continue;
             }
@@ -290,7 +295,7 @@ namespace vefs
     std::vector<types::global_dof_index>          &dofs) const
   {
     dofs.resize(flow_fe.n_dofs_per_cell());
-    if (!elements.on_parent(cell))
+    if (!elements.on_coarser_element(cell))
       {
         cell->get_dof_indices(dofs);
         return;
@@ -298,7 +303,7 @@ namespace vefs
     for (unsigned int i = 0; i < dofs.size(); ++i)
       {
         const auto [c, v] = flow_fe.system_to_component_index(i);
-        dofs[i]           = elements.parent_vertex_dof(cell, v, c);
+        dofs[i]           = elements.element_vertex_dof(cell, v, c);
       }
   }
 
@@ -311,7 +316,8 @@ namespace vefs
     const auto &interface_dofs = interface_values.get_interface_dof_indices();
     const unsigned int n       = interface_dofs.size();
     expansion.resize(n);
-    if (!elements.on_parent(cell) && !elements.on_parent(neighbor))
+    if (!elements.on_coarser_element(cell) &&
+        !elements.on_coarser_element(neighbor))
       {
         // Both cells are their own elements: the interface dofs themselves.
         element_dofs = interface_dofs;
@@ -346,13 +352,14 @@ namespace vefs
     for (unsigned int k = 0; k < n; ++k)
       {
         const auto dof_pair = interface_values.interface_dof_to_dof_indices(k);
-        // A dof of a side on its parent is interpolated from the parent's
-        // vertices (a dof both sides share, the same way from either).
+        // A dof of a side on a coarser element is interpolated from the
+        // element's vertices (a dof both sides share, the same way from
+        // either).
         const bool from_cell = dof_pair[0] != numbers::invalid_unsigned_int &&
-                               elements.on_parent(cell);
+                               elements.on_coarser_element(cell);
         const bool from_neighbor =
           !from_cell && dof_pair[1] != numbers::invalid_unsigned_int &&
-          elements.on_parent(neighbor);
+          elements.on_coarser_element(neighbor);
         const auto        &side = from_neighbor ? neighbor : cell;
         const unsigned int local =
           from_neighbor                                  ? dof_pair[1]
@@ -362,12 +369,10 @@ namespace vefs
         expansion[k].clear();
         if (from_cell || from_neighbor)
           {
-            const unsigned int child =
-              side->parent()->child_iterator_to_index(side);
             for (const auto &[vertex, weight] :
-                 elements.vertex_weights(child, v))
+                 elements.vertex_weights(side, v))
               expansion[k].emplace_back(
-                index_of(elements.parent_vertex_dof(side, vertex, c), c),
+                index_of(elements.element_vertex_dof(side, vertex, c), c),
                 weight);
           }
         else
@@ -383,14 +388,13 @@ namespace vefs
   {
     const auto element  = elements.element(cell);
     const auto neighbor = cell->neighbor(f);
-    // The neighbour's element: itself if it is active or a parent whose
-    // children are on it.
-    if (neighbor->has_children() && !elements.on_parent(neighbor->child(0)))
+    // The neighbour's element: its own if it is active or lies within a
+    // coarser element; a refined cell coarser than the elements is none.
+    if (neighbor->has_children() && !elements.on_coarser_element(neighbor) &&
+        !elements.on_coarser_element(neighbor->child(0)))
       return false;
     const typename FlowElements<dim>::CellIterator neighbor_element =
-      neighbor->has_children()
-        ? typename FlowElements<dim>::CellIterator(neighbor)
-        : elements.element(neighbor);
+      elements.element(neighbor);
     if (neighbor_element->level() != element->level())
       return false;
     const Tensor<1, dim> extent = internal::box_extent<dim>(element);
@@ -423,8 +427,8 @@ namespace vefs
     const auto dof = [&](const typename DoFHandler<dim>::cell_iterator &side,
                          const unsigned int                             v,
                          const unsigned int                             c) {
-      return elements.on_parent(side)
-               ? elements.parent_vertex_dof(side, v, c)
+      return elements.on_coarser_element(side)
+               ? elements.element_vertex_dof(side, v, c)
                : side->vertex_dof_index(v, c, side->active_fe_index());
     };
     // By component, then the layers of vertices (the lower element's far

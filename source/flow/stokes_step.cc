@@ -143,9 +143,9 @@ namespace vefs
     owned_partitioning =
       numbering.flow_blocks(dof_handler.locally_owned_dofs());
     relevant_partitioning = numbering.flow_blocks(relevant_dofs);
-    elements.exchange_parent_dofs(dof_handler, liquid_index, relevant_dofs);
+    elements.exchange_element_dofs(dof_handler, liquid_index, relevant_dofs);
     touched_dofs = relevant_dofs;
-    touched_dofs.add_indices(elements.far_parent_dofs());
+    touched_dofs.add_indices(elements.far_element_dofs());
     touched_partitioning = numbering.flow_blocks(touched_dofs);
     check_periodic_liquid();
     interpolation.clear();
@@ -208,8 +208,8 @@ namespace vefs
   void
   StokesStep<dim>::make_constraints()
   {
-    // The flow's space first: the interpolation in the cells on their
-    // parent, then what constrains the space's own unknowns.
+    // The flow's space first: the interpolation in the cells on a coarser
+    // element, then what constrains the space's own unknowns.
     constraints.clear();
     constraints.copy_from(interpolation);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
@@ -220,7 +220,7 @@ namespace vefs
                                              d,
                                              constraints);
     make_wall_constraints(constraints);
-    make_far_parent_wall_constraints(constraints);
+    make_far_element_wall_constraints(constraints);
     // A periodic pair may be split between ranks, and the walls it meets
     // constrain the same nodes: each rank must know the constraints of the
     // other side. (Several ranks allow one periodic pair only.)
@@ -233,7 +233,7 @@ namespace vefs
 
     // The flow space's own unknowns are constrained by its own only (the
     // interpolated ones are not in its matrices), pressures by pressures
-    // only (hanging nodes, interpolation on the parents). The owned
+    // only (hanging nodes, interpolation on coarser elements). The owned
     // constrained ones are kept for the solves, which start from zero there.
     const types::global_dof_index n_u    = numbering.n_velocities();
     const types::global_dof_index n_flow = numbering.n_flow_dofs();
@@ -269,23 +269,23 @@ namespace vefs
     // Built in deal.II's pattern and handed to Epetra once: inserting the
     // entries of each cell and face into Epetra's graph one by one took most
     // of the setup of the 3D ball. The entries are those the assembly
-    // adds: a parent's element couples its vertices' unknowns once (through
-    // the constraints of the children it took 4 % of a step at 2.5 mm); the
-    // interpolated unknowns of its children have no rows (FlowNumbering).
+    // adds: a coarser element couples its vertices' unknowns once (through
+    // the constraints of its cells it took 4 % of a step at 2.5 mm); the
+    // interpolated unknowns of its cells have no rows (FlowNumbering).
     BlockDynamicSparsityPattern          pattern(touched_partitioning);
     const FiniteElement<dim>            &fe = fe_collection[liquid_index];
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->active_fe_index() == liquid_index)
         {
-          if (!elements.on_parent(cell))
+          if (!elements.on_coarser_element(cell))
             cell->get_dof_indices(dofs);
-          else if (elements.represents_family(cell))
+          else if (elements.represents_element(cell))
             for (unsigned int i = 0; i < dofs.size(); ++i)
               {
                 const auto [component, vertex] =
                   fe.system_to_component_index(i);
-                dofs[i] = elements.parent_vertex_dof(cell, vertex, component);
+                dofs[i] = elements.element_vertex_dof(cell, vertex, component);
               }
           else
             continue;
@@ -321,7 +321,7 @@ namespace vefs
     lumped_pressure_mass.reinit(owned_partitioning, comm);
     flow_solution.reinit(owned_partitioning, comm);
     // All parts, the interpolated too; touched: the contact reactions of
-    // faces read far parent vertices.
+    // faces read far element vertices.
     const std::vector<IndexSet> owned_parts =
       numbering.all_parts(dof_handler.locally_owned_dofs());
     owned_solution.reinit(owned_parts, comm);
@@ -331,20 +331,21 @@ namespace vefs
 
   template <int dim>
   void
-  StokesStep<dim>::make_far_parent_wall_constraints(
+  StokesStep<dim>::make_far_element_wall_constraints(
     AffineConstraints<double> &constraints) const
   {
-    const IndexSet &far = elements.far_parent_dofs();
+    const IndexSet &far = elements.far_element_dofs();
     if (far.is_empty())
       return;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_ghost() && cell->active_fe_index() == liquid_index &&
-          elements.on_parent(cell) && cell->parent()->at_boundary())
-        for (const unsigned int f : cell->parent()->face_indices())
-          if (cell->parent()->at_boundary(f))
+          elements.on_coarser_element(cell) &&
+          elements.element(cell)->at_boundary())
+        for (const unsigned int f : elements.element(cell)->face_indices())
+          if (elements.element(cell)->at_boundary(f))
             {
               const types::boundary_id wall =
-                cell->parent()->face(f)->boundary_id();
+                elements.element(cell)->face(f)->boundary_id();
               const WallType type = parameters.cavity.wall_type[wall];
               if (type != WallType::no_slip && type != WallType::slip &&
                   type != WallType::velocity)
@@ -362,7 +363,7 @@ namespace vefs
                       if (type == WallType::slip && c != wall / 2)
                         continue;
                       const types::global_dof_index dof =
-                        elements.parent_vertex_dof(cell, v, c);
+                        elements.element_vertex_dof(cell, v, c);
                       if (!far.is_element(dof) ||
                           constraints.is_constrained(dof))
                         continue;
@@ -370,8 +371,8 @@ namespace vefs
                       if (type == WallType::velocity)
                         constraints.set_inhomogeneity(
                           dof,
-                          wall_velocity[wall]->value(cell->parent()->vertex(v),
-                                                     c));
+                          wall_velocity[wall]
+                            ->value(elements.element(cell)->vertex(v), c));
                     }
                 }
             }
@@ -446,8 +447,8 @@ namespace vefs
 
     const FiniteElement<dim>       &fe = fe_collection[liquid_index];
     const unsigned int              n  = fe.n_dofs_per_cell();
-    FullMatrix<double>              parent_matrix(n, n), parent_schur(n, n);
-    Vector<double>                  parent_rhs(n), parent_pressure_mass(n);
+    FullMatrix<double>              element_matrix(n, n), element_schur(n, n);
+    Vector<double>                  element_rhs(n), element_pressure_mass(n);
     const std::vector<unsigned int> pressure_only = {dim};
 
     // The pressure rows and columns of a local Schur matrix, in the
@@ -476,7 +477,7 @@ namespace vefs
                                                         schur_matrix);
       };
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && !elements.on_parent(cell) &&
+      if (cell->is_locally_owned() && !elements.on_coarser_element(cell) &&
           domain->has_liquid(cell))
         {
           local.compute(cell);
@@ -492,42 +493,41 @@ namespace vefs
                                                  dof_indices,
                                                  lumped_pressure_mass);
         }
-      else if (cell->is_locally_owned() && elements.on_parent(cell) &&
-               elements.represents_family(cell))
+      else if (cell->is_locally_owned() && elements.on_coarser_element(cell) &&
+               elements.represents_element(cell))
         {
-          // A parent's element: its children's systems summed in the
-          // parent's unknowns, then added once (the same sums as through
-          // the interpolation constraints, without expanding every entry).
-          parent_matrix         = 0;
-          parent_schur          = 0;
-          parent_rhs            = 0;
-          parent_pressure_mass  = 0;
+          // A coarser element: its cells' systems summed in the element's
+          // unknowns, then added once (the same sums as through the
+          // interpolation constraints, without expanding every entry).
+          element_matrix        = 0;
+          element_schur         = 0;
+          element_rhs           = 0;
+          element_pressure_mass = 0;
           bool       any_liquid = false;
-          const auto parent     = cell->parent();
-          for (unsigned int child = 0; child < parent->n_children(); ++child)
+          const auto element    = elements.element(cell);
+          for (const auto &other : elements.cells_of(element))
             {
-              const auto sibling = parent->child(child);
-              if (!sibling->is_locally_owned() || !domain->has_liquid(sibling))
+              if (!other->is_locally_owned() || !domain->has_liquid(other))
                 continue;
               any_liquid = true;
-              local.compute(sibling);
-              elements.add_restricted_to_parent(fe,
-                                                child,
-                                                local.matrix,
-                                                parent_matrix);
-              elements.add_restricted_to_parent(fe,
-                                                child,
-                                                local.schur,
-                                                parent_schur,
-                                                pressure_only);
-              elements.add_restricted_to_parent(fe,
-                                                child,
-                                                local.rhs,
-                                                parent_rhs);
-              elements.add_restricted_to_parent(fe,
-                                                child,
-                                                local.pressure_mass,
-                                                parent_pressure_mass);
+              local.compute(other);
+              elements.add_restricted_to_element(fe,
+                                                 other,
+                                                 local.matrix,
+                                                 element_matrix);
+              elements.add_restricted_to_element(fe,
+                                                 other,
+                                                 local.schur,
+                                                 element_schur,
+                                                 pressure_only);
+              elements.add_restricted_to_element(fe,
+                                                 other,
+                                                 local.rhs,
+                                                 element_rhs);
+              elements.add_restricted_to_element(fe,
+                                                 other,
+                                                 local.pressure_mass,
+                                                 element_pressure_mass);
             }
           if (!any_liquid)
             continue;
@@ -535,17 +535,17 @@ namespace vefs
             {
               const auto [component, vertex] = fe.system_to_component_index(i);
               dof_indices[i] =
-                elements.parent_vertex_dof(cell, vertex, component);
+                elements.element_vertex_dof(cell, vertex, component);
             }
-          local.apply_pressure_mass_floor(parent_pressure_mass,
-                                          parent->measure());
-          constraints.distribute_local_to_global(parent_matrix,
-                                                 parent_rhs,
+          local.apply_pressure_mass_floor(element_pressure_mass,
+                                          element->measure());
+          constraints.distribute_local_to_global(element_matrix,
+                                                 element_rhs,
                                                  dof_indices,
                                                  system_matrix,
                                                  system_rhs);
-          add_to_schur(parent_schur, dof_indices);
-          constraints.distribute_local_to_global(parent_pressure_mass,
+          add_to_schur(element_schur, dof_indices);
+          constraints.distribute_local_to_global(element_pressure_mass,
                                                  dof_indices,
                                                  lumped_pressure_mass);
         }
@@ -628,7 +628,7 @@ namespace vefs
     // interpolated unknowns left the matrix, each a row of its own
     // diagonal, the first step alone took 17 and 22).
     velocity_data.aggregation_threshold =
-      parameters.flow.flow_on_parents ? 0.05 : 0.02;
+      parameters.flow.flow_level_offset > 0 ? 0.05 : 0.02;
     velocity_data.constant_modes = constant_modes;
     systems.velocity_amg =
       std::make_unique<TrilinosWrappers::PreconditionAMG>();

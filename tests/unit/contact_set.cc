@@ -63,7 +63,7 @@ namespace
     parameters.cavity.wall_type[2]      = vefs::WallType::contact;
     parameters.material.gravity         = {0, 0};
     parameters.material.relaxation_time = 0;
-    parameters.flow.flow_on_parents     = false;
+    parameters.flow.flow_level_offset   = 0;
     parameters.solver.solver_tolerance  = 1e-10;
 
     parallel::distributed::Triangulation<2> triangulation(comm);

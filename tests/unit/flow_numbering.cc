@@ -68,7 +68,7 @@ namespace
     {
       dof_handler.distribute_dofs(collection);
       vefs::FlowParameters parameters;
-      parameters.flow_on_parents = on_parents;
+      parameters.flow_level_offset = on_parents ? 1 : 0;
       const vefs::FlowElements<dim> elements(parameters, 3);
       return vefs::renumber_flow_dofs(dof_handler, elements, 0);
     }

@@ -177,7 +177,7 @@ main()
              t.stress_interpolation ==
                vefs::StressInterpolation::limited_cubic &&
              t.remap_distance == 10 && t.redistancing_interval == 0 &&
-             !t.volume_correction && f.flow_on_parents &&
+             !t.volume_correction && f.flow_level_offset == 1 &&
              f.extension_layers == 7 && f.extend_outside_velocity &&
              f.outside_stress == vefs::OutsideStress::extension &&
              parameters.stress.stress_update ==

@@ -70,25 +70,45 @@ namespace vefs
   using ChildVertexWeights =
     std::vector<std::vector<std::vector<std::pair<unsigned int, double>>>>;
 
+  /**
+   * The same from a cell's vertices to those of its descendants @p depth
+   * levels finer, by the descendant's position in the cell's lattice of
+   * 2^depth cells per direction (lexicographic, x fastest: for depth 1 the
+   * child's number) and its vertex.
+   */
+  template <int dim>
+  ChildVertexWeights<dim>
+  make_descendant_vertex_weights(const unsigned int depth)
+  {
+    constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+    const unsigned int     n_per_direction = 1u << depth;
+    unsigned int           n_positions     = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      n_positions *= n_per_direction;
+    ChildVertexWeights<dim> weights(
+      n_positions,
+      std::vector<std::vector<std::pair<unsigned int, double>>>(n_vertices));
+    for (unsigned int position = 0; position < n_positions; ++position)
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        {
+          Point<dim> xi;
+          for (unsigned int d = 0, rest = position; d < dim;
+               ++d, rest /= n_per_direction)
+            xi[d] =
+              static_cast<double>(rest % n_per_direction + ((v >> d) & 1)) /
+              n_per_direction;
+          for (unsigned int w = 0; w < n_vertices; ++w)
+            if (const double weight = internal::q1_shape(w, xi); weight != 0)
+              weights[position][v].emplace_back(w, weight);
+        }
+    return weights;
+  }
+
   template <int dim>
   ChildVertexWeights<dim>
   make_child_vertex_weights()
   {
-    constexpr unsigned int  n_vertices = GeometryInfo<dim>::vertices_per_cell;
-    ChildVertexWeights<dim> weights(
-      n_vertices,
-      std::vector<std::vector<std::pair<unsigned int, double>>>(n_vertices));
-    for (unsigned int c = 0; c < n_vertices; ++c)
-      for (unsigned int v = 0; v < n_vertices; ++v)
-        {
-          Point<dim> xi;
-          for (unsigned int d = 0; d < dim; ++d)
-            xi[d] = 0.5 * (((c >> d) & 1) + ((v >> d) & 1));
-          for (unsigned int w = 0; w < n_vertices; ++w)
-            if (const double weight = internal::q1_shape(w, xi); weight != 0)
-              weights[c][v].emplace_back(w, weight);
-        }
-    return weights;
+    return make_descendant_vertex_weights<dim>(1);
   }
 
   /**

@@ -17,49 +17,56 @@
 namespace vefs
 {
   /**
-   * The elements of the flow's Q1-Q1 space ('Flow/Flow cells').
-   * With 'finest' every cell is its own element. With 'parents' the cells
-   * of the finest level ('Maximum level') share their parent's element: the
-   * flow's velocity and pressure are Q1 on the parents there, one level
-   * coarser than the transport, while the liquid domain is still cut out of
-   * the finest cells (the seed solved its flow on 5 mm cells over a 1 mm
-   * transport grid). The finest cells keep their own degrees of freedom;
-   * those at nodes that are not their parent's vertices are interpolated
-   * from the parent's: numbered after the flow space's own (FlowNumbering),
-   * they are no rows of the matrices and no entries of the Krylov vectors,
-   * and after a solve they hold the parent's Q1 interpolant, so that the
+   * The elements of the flow's Q1-Q1 space ('Flow/Flow cells'), k levels
+   * coarser than the finest cells ('Maximum level'): with k = 0 ('finest')
+   * every cell is its own element; with k > 0 ('parents': 1) every cell
+   * finer than the flow level (the finest level minus k) shares the element
+   * of its ancestor on the flow level. The flow's velocity and pressure are
+   * Q1 on that ancestor while the liquid domain is still cut out of the
+   * finest cells (the seed solved its flow on 5 mm cells over a 1 mm
+   * transport grid). The cells keep their own degrees of freedom; those at
+   * nodes that are not vertices of their element are interpolated from the
+   * element's: numbered after the flow space's own (FlowNumbering), they
+   * are no rows of the matrices and no entries of the Krylov vectors, and
+   * after a solve they hold the element's Q1 interpolant, so that the
    * transport, contact and output read the cells as before.
    *
-   * p4est keeps the children of a parent whose children are all active on
-   * one rank, so a parent's element lies within one rank's cells. A ghost
-   * cell's siblings, though, may be artificial: the ranks exchange the
-   * parents' vertex unknowns of ghost cells (exchange_parent_dofs()), and
-   * a rank may have to constrain and write into unknowns of such parents
-   * that it does not otherwise see (far_parent_dofs()).
+   * An element's cells lie on one rank (with k = 1 p4est keeps a family of
+   * active children together). A ghost cell's element may reach into
+   * artificial cells, though: the ranks exchange the element's vertex
+   * unknowns of ghost cells (exchange_element_dofs()), and a rank may have
+   * to constrain and write into unknowns of such elements that it does not
+   * otherwise see (far_element_dofs()).
    */
   template <int dim>
   class FlowElements
   {
   public:
     using CellIterator = typename Triangulation<dim>::cell_iterator;
+    using ActiveCellIterator =
+      typename Triangulation<dim>::active_cell_iterator;
 
     /** @p max_level: the level of the finest cells. */
     FlowElements(const FlowParameters &parameters,
                  const unsigned int    max_level);
 
-    /** Whether the flow's element of @p cell is its parent. */
+    /** Whether the flow's element of @p cell is a coarser ancestor. */
     bool
-    on_parent(const CellIterator &cell) const
+    on_coarser_element(const CellIterator &cell) const
     {
-      return on_parents && cell->level() == static_cast<int>(finest_level) &&
-             cell->level() > 0;
+      return cell->level() > flow_level;
     }
 
-    /** The cell that is the flow's element of @p cell. */
-    CellIterator
-    element(const CellIterator &cell) const
+    /** The cell that is the flow's element of @p cell (an iterator of
+     * @p cell's kind: of the Triangulation or the DoFHandler). */
+    template <typename Accessor>
+    TriaIterator<Accessor>
+    element(const TriaIterator<Accessor> &cell) const
     {
-      return on_parent(cell) ? cell->parent() : cell;
+      TriaIterator<Accessor> ancestor = cell;
+      while (ancestor->level() > flow_level)
+        ancestor = ancestor->parent();
+      return ancestor;
     }
 
     /** The size h of the flow's element of @p cell (shortest edge). */
@@ -67,22 +74,45 @@ namespace vefs
     size(const CellIterator &cell) const
     {
       const double h = cell->minimum_vertex_distance();
-      return on_parent(cell) ? 2 * h : h;
+      return on_coarser_element(cell) ? h * (1u << (cell->level() - flow_level))
+                                      : h;
     }
 
     /** Whether @p a and @p b lie in the same element. */
     bool
     same_element(const CellIterator &a, const CellIterator &b) const
     {
-      return on_parent(a) && on_parent(b) && a->parent() == b->parent();
+      return on_coarser_element(a) && on_coarser_element(b) &&
+             element(a) == element(b);
+    }
+
+    /** The active cells of @p element, depth first in deal.II's child
+     * order (iterators of @p element's kind). */
+    template <typename Accessor>
+    std::vector<TriaActiveIterator<Accessor>>
+    cells_of(const TriaIterator<Accessor> &element) const
+    {
+      std::vector<TriaActiveIterator<Accessor>> cells;
+      std::vector<TriaIterator<Accessor>>       pending = {element};
+      while (!pending.empty())
+        {
+          const TriaIterator<Accessor> cell = pending.back();
+          pending.pop_back();
+          if (cell->is_active())
+            cells.emplace_back(cell);
+          else
+            for (unsigned int c = cell->n_children(); c-- > 0;)
+              pending.push_back(cell->child(c));
+        }
+      return cells;
     }
 
     using Location = typename LiquidDomain<dim>::Location;
 
     /**
      * Where the elements of the owned and ghost cells lie with respect to
-     * the liquid of @p domain. An element on a parent is full if all its
-     * children are, empty if all are, cut otherwise.
+     * the liquid of @p domain. A coarser element is full if all its cells
+     * are, empty if all are, cut otherwise.
      */
     void
     classify(const DoFHandler<dim>   &dof_handler,
@@ -91,66 +121,65 @@ namespace vefs
     /** Where the element of an owned or ghost @p cell lies (after
      * classify()). */
     Location
-    location(
-      const typename Triangulation<dim>::active_cell_iterator &cell) const
+    location(const ActiveCellIterator &cell) const
     {
-      return on_parents ? element_locations[cell->active_cell_index()]
-                        : domain->location(cell);
+      return level_offset > 0 ? element_locations[cell->active_cell_index()]
+                              : domain->location(cell);
     }
 
     /**
      * Whether the element of an owned or ghost @p cell holds liquid: then
-     * the cell carries flow unknowns (with parents: also a dry child of a
-     * parent with liquid, whose vertex is one of the element's).
+     * the cell carries flow unknowns (on a coarser element: also a dry cell
+     * of an element with liquid, whose vertex may be one of the element's).
      */
     bool
-    has_liquid(
-      const typename Triangulation<dim>::active_cell_iterator &cell) const
+    has_liquid(const ActiveCellIterator &cell) const
     {
       return location(cell) != Location::empty;
     }
 
     /**
      * After the flow unknowns are distributed (active FE index @p fe_index
-     * on cells with flow unknowns): receive the unknowns at the parent's
-     * vertices of every ghost cell on its parent from the rank that owns
-     * it. @p relevant: the locally relevant unknowns.
+     * on cells with flow unknowns): receive the unknowns at the element's
+     * vertices of every ghost cell on a coarser element from the rank that
+     * owns it. @p relevant: the locally relevant unknowns.
      */
     void
-    exchange_parent_dofs(const DoFHandler<dim> &dof_handler,
-                         const unsigned int     fe_index,
-                         const IndexSet        &relevant);
+    exchange_element_dofs(const DoFHandler<dim> &dof_handler,
+                          const unsigned int     fe_index,
+                          const IndexSet        &relevant);
 
-    /** Of component @p c at vertex @p v of the parent of the owned or ghost
-     * @p cell, which is on its parent (after exchange_parent_dofs()). */
+    /** Of component @p c at vertex @p v of the element of the owned or
+     * ghost @p cell, which is on a coarser element (after
+     * exchange_element_dofs()). */
     types::global_dof_index
-    parent_vertex_dof(const typename DoFHandler<dim>::cell_iterator &cell,
-                      const unsigned int                             v,
-                      const unsigned int                             c) const;
+    element_vertex_dof(const typename DoFHandler<dim>::cell_iterator &cell,
+                       const unsigned int                             v,
+                       const unsigned int                             c) const;
 
-    /** The parent vertices' unknowns of ghost cells that are not locally
-     * relevant (after exchange_parent_dofs()). */
+    /** The element vertices' unknowns of ghost cells that are not locally
+     * relevant (after exchange_element_dofs()). */
     const IndexSet &
-    far_parent_dofs() const
+    far_element_dofs() const
     {
       return far_dofs;
     }
 
     /**
-     * The flow unknowns of owned and ghost cells on their parent (active FE
-     * index @p fe_index) at nodes that are not vertices of the parent: those
-     * make_interpolation_constraints() constrains. Of the size of
-     * @p dof_handler's unknowns.
+     * The flow unknowns of owned and ghost cells on a coarser element
+     * (active FE index @p fe_index) at nodes that are not vertices of the
+     * element: those make_interpolation_constraints() constrains. Of the
+     * size of @p dof_handler's unknowns.
      */
     IndexSet
     interpolated_dofs(const DoFHandler<dim> &dof_handler,
                       const unsigned int     fe_index) const;
 
     /**
-     * Into @p constraints: every flow unknown of a cell on its parent at a
-     * node that is not a vertex of the parent equals the parent's Q1
+     * Into @p constraints: every flow unknown of a cell on a coarser element
+     * at a node that is not a vertex of the element equals the element's Q1
      * interpolant, in every component. Owned and ghost cells with flow
-     * unknowns (active FE index @p fe_index; after exchange_parent_dofs()).
+     * unknowns (active FE index @p fe_index; after exchange_element_dofs()).
      * Unknowns already constrained are left alone.
      */
     void
@@ -160,34 +189,28 @@ namespace vefs
       AffineConstraints<double> &constraints) const;
 
     /**
-     * Whether the owned @p cell, on its parent, is the first owned child of
-     * that parent: the one through which a loop over the owned cells visits
-     * the parent's element once.
+     * Whether the owned @p cell, on a coarser element, is the element's
+     * first owned cell (cells_of()): the one through which a loop over the
+     * owned cells visits the element once.
      */
     bool
-    represents_family(const CellIterator &cell) const
-    {
-      const auto parent = cell->parent();
-      for (unsigned int c = 0; c < parent->n_children(); ++c)
-        if (parent->child(c)->is_locally_owned())
-          return parent->child(c) == cell;
-      return false;
-    }
+    represents_element(const CellIterator &cell) const;
 
     /**
-     * Add the cell matrix @p fine of a cell on its parent, child @p child,
-     * to @p parent, in the unknowns of the parent's vertices: P^T fine P
-     * with P the Q1 interpolation from the parent's vertices to the
-     * child's, component by component (the cell's FE @p fe: Q1 in every
-     * component; @p parent of its size). The assembly sums a family so and
-     * adds the sum with the parent's unknowns (parent_vertex_dof()) once,
-     * instead of expanding the interpolation constraints of every entry.
+     * Add the cell matrix @p fine of the active @p cell, on a coarser
+     * element, to @p coarse, in the unknowns of the element's vertices: P^T
+     * fine P with P the Q1 interpolation from the element's vertices to the
+     * cell's, component by component (the cell's FE @p fe: Q1 in every
+     * component; @p coarse of its size). The assembly sums an element's
+     * cells so and adds the sum with the element's unknowns
+     * (element_vertex_dof()) once, instead of expanding the interpolation
+     * constraints of every entry.
      */
     void
-    add_restricted_to_parent(const FiniteElement<dim> &fe,
-                             const unsigned int        child,
-                             const FullMatrix<double> &fine,
-                             FullMatrix<double>       &parent) const;
+    add_restricted_to_element(const FiniteElement<dim> &fe,
+                              const CellIterator       &cell,
+                              const FullMatrix<double> &fine,
+                              FullMatrix<double>       &coarse) const;
 
     /**
      * The same for a cell matrix that is zero outside the rows and columns
@@ -195,32 +218,30 @@ namespace vefs
      * preconditioner's cell matrix holds the pressure only).
      */
     void
-    add_restricted_to_parent(const FiniteElement<dim>        &fe,
-                             const unsigned int               child,
-                             const FullMatrix<double>        &fine,
-                             FullMatrix<double>              &parent,
-                             const std::vector<unsigned int> &components) const;
+    add_restricted_to_element(
+      const FiniteElement<dim>        &fe,
+      const CellIterator              &cell,
+      const FullMatrix<double>        &fine,
+      FullMatrix<double>              &coarse,
+      const std::vector<unsigned int> &components) const;
 
     /** The same for a cell vector: P^T fine. */
     void
-    add_restricted_to_parent(const FiniteElement<dim> &fe,
-                             const unsigned int        child,
-                             const Vector<double>     &fine,
-                             Vector<double>           &parent) const;
+    add_restricted_to_element(const FiniteElement<dim> &fe,
+                              const CellIterator       &cell,
+                              const Vector<double>     &fine,
+                              Vector<double>           &coarse) const;
 
-    /** The non-zero weights (vertex, weight) of the parent's vertices at
-     * vertex @p v of child @p child. */
+    /** The non-zero weights (vertex, weight) of the element's vertices at
+     * vertex @p v of @p cell, which is on a coarser element. */
     const std::vector<std::pair<unsigned int, double>> &
-    vertex_weights(const unsigned int child, const unsigned int v) const
-    {
-      return child_vertex_weights[child][v];
-    }
+    vertex_weights(const CellIterator &cell, const unsigned int v) const;
 
   private:
     /**
      * @p function(cell, v, weights) for every vertex v that is not a vertex
-     * of the parent, of every owned or ghost cell on its parent with active
-     * FE index @p fe_index; weights: vertex_weights() there.
+     * of the element, of every owned or ghost cell on a coarser element with
+     * active FE index @p fe_index; weights: vertex_weights() there.
      */
     template <typename VertexFunction>
     void
@@ -228,25 +249,45 @@ namespace vefs
                                  const unsigned int     fe_index,
                                  const VertexFunction  &function) const;
 
-    /** The non-zero weights (vertex, weight) of the parent's vertices at
-     * vertex v of child c: [c][v]. */
-    const ChildVertexWeights<dim> child_vertex_weights;
+    /** The active cell of the element of @p cell that holds the element's
+     * vertex @p v (an iterator of @p cell's kind). */
+    template <typename Iterator>
+    Iterator
+    corner_cell(const Iterator &cell, const unsigned int v) const
+    {
+      Iterator corner = cell;
+      while (corner->level() > flow_level)
+        corner = corner->parent();
+      // Child v of a cell holds the cell's vertex v.
+      while (corner->has_children())
+        corner = corner->child(v);
+      return corner;
+    }
 
-    const bool         on_parents;
-    const unsigned int finest_level;
+    const unsigned int level_offset;
+    /** The level of the coarser elements: the finest level minus k. */
+    const int flow_level;
+    /**
+     * The non-zero weights (vertex, weight) of an element's vertices at the
+     * vertices of its cells k' = 1..k levels finer: [k' - 1][position][v],
+     * position the cell's place in the element's 2^k' lattice
+     * (lexicographic, x fastest).
+     */
+    std::vector<ChildVertexWeights<dim>> descendant_vertex_weights;
     /** 0, ..., dim: the components of the flow. */
     std::vector<unsigned int> all_components;
-    /** Reused by add_restricted_to_parent(): it runs for every child. */
+    /** Reused by add_restricted_to_element(): it runs for every cell. */
     mutable FullMatrix<double>        restriction_scratch;
     mutable std::vector<unsigned int> restriction_rows;
     const LiquidDomain<dim>          *domain = nullptr;
-    /** With parents: by active cell index, of owned and ghost cells. */
+    /** On coarser elements: by active cell index, of owned and ghost
+     * cells. */
     std::vector<Location> element_locations;
-    /** Unknowns at the parent's vertices, (vertex, component) in
-     * lexicographic order, of ghost cells on their parent, by active cell
-     * index. */
+    /** Unknowns at the element's vertices, (vertex, component) in
+     * lexicographic order, of ghost cells on a coarser element, by active
+     * cell index. */
     std::map<unsigned int, std::vector<types::global_dof_index>>
-             ghost_parent_dofs;
+             ghost_element_dofs;
     IndexSet far_dofs;
   };
 } // namespace vefs

@@ -46,10 +46,10 @@ namespace vefs
       return outside_stress == OutsideStress::extension;
     }
 
-    /** Whether the flow's unknowns on the finest cells are their parents'
-     * ('Flow cells = parents'), see FlowElements. */
-    bool         flow_on_parents  = false;
-    unsigned int extension_layers = 4;
+    /** How many levels the flow's elements are coarser than the finest
+     * cells ('Flow cells': finest 0, parents 1), see FlowElements. */
+    unsigned int flow_level_offset = 0;
+    unsigned int extension_layers  = 4;
     /**
      * Whether the vertices of cut cells outside the liquid take the extended
      * velocity instead of the flow step's ('Outside velocity of cut cells').

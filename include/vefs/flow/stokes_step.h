@@ -142,8 +142,8 @@ namespace vefs
     double
     outflow_rate() const;
 
-    /** The flow's unknowns: with 'Flow cells = parents' those of the
-     * parents' Q1 space, not the interpolated ones of the finest cells. */
+    /** The flow's unknowns: with coarser 'Flow cells' those of the
+     * elements' Q1 space, not the interpolated ones of the finer cells. */
     types::global_dof_index
     n_dofs() const
     {
@@ -170,11 +170,11 @@ namespace vefs
     make_wall_constraints(AffineConstraints<double> &constraints) const;
     /**
      * The same for the unknowns this rank writes into at the vertices of
-     * ghost cells' parents that it does not otherwise see
-     * (FlowElements::far_parent_dofs()).
+     * ghost cells' elements that it does not otherwise see
+     * (FlowElements::far_element_dofs()).
      */
     void
-    make_far_parent_wall_constraints(
+    make_far_element_wall_constraints(
       AffineConstraints<double> &constraints) const;
 
     /**
@@ -203,13 +203,13 @@ namespace vefs
     IndexSet              relevant_dofs;
     /**
      * The unknowns whose constraints and matrix rows this rank touches: the
-     * locally relevant ones and, with 'Flow cells = parents', the far
-     * vertices of ghost cells' parents.
+     * locally relevant ones and, with coarser 'Flow cells', the far
+     * vertices of ghost cells' elements.
      */
     IndexSet              touched_dofs;
     std::vector<IndexSet> touched_partitioning;
     /**
-     * Hanging-node, periodic, wall and (with 'Flow cells = parents') the
+     * Hanging-node, periodic, wall and (with coarser 'Flow cells') the
      * interpolation constraints; not the contact set, which ContactWalls
      * imposes on the matrix rows, so that a contact iteration needs neither
      * an assembly nor new constraints.
@@ -243,7 +243,7 @@ namespace vefs
     const Rheology<dim> &rheology;
     ContactWalls<dim>    contact;
     FlowElements<dim>    elements;
-    /** The unknowns of the finest cells interpolated from their parent's
+    /** The unknowns of cells interpolated from their coarser element's
      * (FlowElements), a part of every other set of constraints. */
     AffineConstraints<double> interpolation;
     /** The flow space's own unknowns first, the interpolated ones after. */
