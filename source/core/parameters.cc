@@ -212,14 +212,17 @@ namespace vefs
       "'Transport')");
     require(flow.flow_level_offset == 0 || cavity.periodic_directions().empty(),
             "Flow/Flow cells",
-            "'parents' is not implemented with periodic walls: use "
-            "'finest'");
+            "'parents' and 'grandparents' are not implemented with periodic "
+            "walls: use 'finest'");
     require(flow.flow_level_offset == 0 ||
-              (mesh.max_level > 0 && mesh.bulk_level + 1 >= mesh.max_level),
+              (mesh.max_level >= flow.flow_level_offset &&
+               mesh.bulk_level + flow.flow_level_offset >= mesh.max_level),
             "Flow/Flow cells",
-            "'parents' needs 'Mesh refinement/Bulk level' = 'Mesh "
-            "refinement/Maximum level' - 1 (or equal to it, and at least 1): "
-            "the flow's cells then all lie on one level");
+            "'parents' needs 'Mesh refinement/Bulk level' >= 'Mesh "
+            "refinement/Maximum level' - 1 and 'Maximum level' >= 1, "
+            "'grandparents' 'Bulk level' >= 'Maximum level' - 2 and "
+            "'Maximum level' >= 2: the flow's cells then all lie on one "
+            "level");
 
     require(!time.second_order || stress.stress_theta == 1,
             "Stress/Stress theta",

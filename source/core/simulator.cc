@@ -11,6 +11,7 @@
 #include <vefs/stress/stress.h>
 #include <vefs/transport/free_surface.h>
 #include <vefs/transport/initial_liquid.h>
+#include <vefs/transport/subtree_partition.h>
 
 #include <cmath>
 #include <iomanip>
@@ -281,18 +282,30 @@ namespace vefs
     // empty one only the transport. A family to be coarsened is weighed
     // through its parent, whose own mark dates from its refinement: it has
     // liquid if a child has.
-    triangulation.signals.weight.connect(
+    const auto cell_weight =
       [](const typename Triangulation<dim>::cell_iterator &cell,
          const typename Triangulation<dim>::CellStatus status) -> unsigned int {
-        bool liquid = cell->material_id() == liquid_material_id;
-        if (status == Triangulation<dim>::CELL_COARSEN)
-          {
-            AssertThrow(cell->has_children(), ExcInternalError());
-            liquid = false;
-            for (const auto &child : cell->child_iterators())
-              liquid |= child->material_id() == liquid_material_id;
-          }
-        return liquid ? 4 : 1;
+      bool liquid = cell->material_id() == liquid_material_id;
+      if (status == Triangulation<dim>::CELL_COARSEN)
+        {
+          AssertThrow(cell->has_children(), ExcInternalError());
+          liquid = false;
+          for (const auto &child : cell->child_iterators())
+            liquid |= child->material_id() == liquid_material_id;
+        }
+      return liquid ? 4 : 1;
+    };
+    // Flow elements two or more levels coarser than the finest cells need
+    // their cells on one rank (FlowElements); p4est keeps families of one
+    // level together by itself.
+    if (parameters.flow.flow_level_offset >= 2)
+      levels.subtree_level = static_cast<int>(parameters.mesh.max_level) -
+                             parameters.flow.flow_level_offset;
+    const SubtreePartition<dim> partition(levels.subtree_level, cell_weight);
+    triangulation.signals.weight.connect(
+      [partition](const typename Triangulation<dim>::cell_iterator &cell,
+                  const typename Triangulation<dim>::CellStatus     status) {
+        return partition.weight(cell, status);
       });
     locator =
       std::make_unique<BoxMeshLocator<dim>>(triangulation,

@@ -15,15 +15,19 @@ namespace vefs
         "Flow cells",
         flow_level_offset,
         std::vector<std::pair<std::string, unsigned int>>{{"finest", 0},
-                                                          {"parents", 1}},
+                                                          {"parents", 1},
+                                                          {"grandparents", 2}},
         "The cells of the flow's velocity and pressure. finest: every cell. "
-        "parents: where the mesh is at 'Maximum level', the flow's unknowns "
-        "are Q1 on the parents of the finest cells, one level coarser than "
-        "the transport (as the seed's 5 mm flow cells over 1 mm transport "
-        "cells), while the liquid domain is still cut out of the finest "
-        "cells. About 2^dim times fewer flow unknowns in the band around the "
-        "surface. Needs 'Mesh refinement/Bulk level' = 'Maximum level' - 1; not with "
-        "periodic walls.");
+        "parents: where the mesh is finer than 'Maximum level' - 1, the "
+        "flow's unknowns are Q1 on the ancestors of the cells on that level, "
+        "one level coarser than the transport (as the seed's 5 mm flow "
+        "cells over 1 mm transport cells), while the liquid domain is still "
+        "cut out of the finest cells: about 2^dim times fewer flow unknowns "
+        "in the band around the surface. grandparents: two levels coarser, "
+        "about 4^dim times fewer; the mesh partition then keeps each flow "
+        "cell's descendants on one rank. Needs 'Mesh refinement/Bulk level' "
+        ">= 'Maximum level' minus the offset (1 or 2); not with periodic "
+        "walls.");
       prm.add_parameter("Extension layers",
                         extension_layers,
                         "Number of cell layers beyond the liquid into which "

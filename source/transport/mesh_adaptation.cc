@@ -6,8 +6,10 @@
 #include <vefs/fields/vertex_field_transfer.h>
 #include <vefs/transport/field_hermite.h>
 #include <vefs/transport/mesh_adaptation.h>
+#include <vefs/transport/subtree_partition.h>
 
 #include <array>
+#include <functional>
 #include <numeric>
 
 namespace vefs
@@ -436,34 +438,43 @@ namespace vefs
             coarsened_detail->from_fields(fields);
             lattice_source = coarsened_detail;
           }
-        Transfer transfer(triangulation, fields, slots, lattice_source);
-        triangulation.execute_coarsening_and_refinement();
+        const auto move_fields = [&](const std::function<void()> &change) {
+          Transfer transfer(triangulation, fields, slots, lattice_source);
+          change();
 
-        fields.setup_dofs();
-        std::vector<typename TransportedFields<dim>::VectorType> transferred(
-          slots.size());
-        std::vector<typename TransportedFields<dim>::VectorType *> new_vectors;
-        for (auto &vector : transferred)
-          {
-            fields.initialize_vector(vector);
-            new_vectors.push_back(&vector);
-          }
-        transfer.unpack(fields, new_vectors);
-        // swap(), not operator=: a vector whose owned range is the same
-        // after the change would keep its old ghost layout.
-        fields.swap(transferred[0]);
-        if (with_gradient)
-          level_set_gradient->swap(transferred[1]);
-        else if (level_set_gradient)
-          level_set_gradient->reinit(fields);
-        if (surface_ahead)
-          {
-            surface_ahead->swap(transferred.back());
-            fields.make_consistent(*surface_ahead);
-          }
-        fields.finalize();
-        if (with_gradient)
-          level_set_gradient->finalize(fields);
+          fields.setup_dofs();
+          std::vector<typename TransportedFields<dim>::VectorType> transferred(
+            slots.size());
+          std::vector<typename TransportedFields<dim>::VectorType *>
+            new_vectors;
+          for (auto &vector : transferred)
+            {
+              fields.initialize_vector(vector);
+              new_vectors.push_back(&vector);
+            }
+          transfer.unpack(fields, new_vectors);
+          // swap(), not operator=: a vector whose owned range is the same
+          // after the change would keep its old ghost layout.
+          fields.swap(transferred[0]);
+          if (with_gradient)
+            level_set_gradient->swap(transferred[1]);
+          else if (level_set_gradient)
+            level_set_gradient->reinit(fields);
+          if (surface_ahead)
+            {
+              surface_ahead->swap(transferred.back());
+              fields.make_consistent(*surface_ahead);
+            }
+          fields.finalize();
+          if (with_gradient)
+            level_set_gradient->finalize(fields);
+        };
+        move_fields(
+          [&]() { triangulation.execute_coarsening_and_refinement(); });
+        // Refined last cells of subtrees that must stay whole weigh as much
+        // each as the subtree: p4est may have cut one (SubtreePartition).
+        if (subtrees_split(triangulation, levels.subtree_level))
+          move_fields([&]() { triangulation.repartition(); });
         changed = true;
       }
     return changed;

@@ -1,17 +1,20 @@
 // renumber_flow_dofs() (flow_numbering.h) on the unit square and cube,
 // cells of level 2 with those whose centre has x < 0.5 refined to level 3,
 // the flow's Q1 velocity and pressure on every cell:
-// - 'Flow cells = parents': the interpolated dofs are exactly those at the
-//   nodes of level-3 cells that are not nodes of the level-2 lattice
-//   (counted by brute force over the vertices' coordinates), (dim + 1)
-//   per node; they, and only they, are numbered from n_flow_dofs() on, the
-//   velocities in parts 0 and 2 and the pressures in parts 1 and 3 as the
-//   cells' elements say; the new numbers are a permutation of 0..n-1 (the
-//   owned sets of the ranks partition them).
+// - 'Flow cells = parents' (grandparents): the interpolated dofs are
+//   exactly those at the nodes of cells finer than level 2 (1) that are not
+//   nodes of the level-2 (1) lattice (counted by brute force over the
+//   vertices' coordinates), (dim + 1) per node; they, and only they, are
+//   numbered from n_flow_dofs() on, the velocities in parts 0 and 2 and the
+//   pressures in parts 1 and 3 as the cells' elements say; the new numbers
+//   are a permutation of 0..n-1 (the owned sets of the ranks partition
+//   them). FlowElements::vertex_weights() at each vertex of these cells:
+//   the weights sum to 1 and the weighted element vertices are the vertex
+//   (Q1 interpolation reproduces linear functions), to round-off.
 // - 'Flow cells = finest': no interpolated dofs, and the numbering is
 //   deal.II's DoFRenumbering::component_wise() itself, dof by dof.
 // Exact integers: 1 and 2 ranks print the same; the nodes off the lattice
-// are 30 in 2D and 330 in 3D.
+// are 30 in 2D and 330 in 3D with parents, 46 and 428 with grandparents.
 
 #include "unit_test.h"
 
@@ -64,13 +67,19 @@ namespace
     /** The flow's dofs on @p dof_handler (of this mesh), renumbered by
      * renumber_flow_dofs() with 'Flow cells = parents' or 'finest'. */
     vefs::FlowNumbering
-    number(DoFHandler<dim> &dof_handler, const bool on_parents) const
+    number(DoFHandler<dim> &dof_handler, const unsigned int offset) const
     {
       dof_handler.distribute_dofs(collection);
+      return vefs::renumber_flow_dofs(dof_handler, elements(offset), 0);
+    }
+
+    /** The flow's elements @p offset levels coarser than level 3. */
+    static vefs::FlowElements<dim>
+    elements(const unsigned int offset)
+    {
       vefs::FlowParameters parameters;
-      parameters.flow_level_offset = on_parents ? 1 : 0;
-      const vefs::FlowElements<dim> elements(parameters, 3);
-      return vefs::renumber_flow_dofs(dof_handler, elements, 0);
+      parameters.flow_level_offset = offset;
+      return vefs::FlowElements<dim>(parameters, 3);
     }
 
     parallel::distributed::Triangulation<dim> triangulation;
@@ -90,19 +99,22 @@ namespace
 
   template <int dim>
   void
-  check_parents(std::ostream &out)
+  check_coarser(std::ostream &out, const unsigned int offset)
   {
     const MPI_Comm            comm = MPI_COMM_WORLD;
     const FlowMesh<dim>       mesh;
     DoFHandler<dim>           dof_handler(mesh.triangulation);
-    const vefs::FlowNumbering numbering = mesh.number(dof_handler, true);
+    const vefs::FlowNumbering numbering  = mesh.number(dof_handler, offset);
+    const int                 flow_level = 3 - offset;
+    const double              n_lattice  = 1 << flow_level;
 
-    // The nodes off the level-2 lattice, from the owned cells: all ranks.
+    // The nodes off the flow level's lattice, from the owned cells: all
+    // ranks.
     std::set<std::array<double, dim>> fine_nodes;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->level() == 3)
+      if (cell->is_locally_owned() && cell->level() > flow_level)
         for (const unsigned int v : cell->vertex_indices())
-          if (!on_lattice(cell->vertex(v), 4.))
+          if (!on_lattice(cell->vertex(v), n_lattice))
             {
               std::array<double, dim> x;
               for (unsigned int d = 0; d < dim; ++d)
@@ -121,9 +133,13 @@ namespace
           all_fine_nodes.insert(x);
         }
 
-    const std::string name = std::to_string(dim) + "D, parents: ";
-    // 2D: 5 x 9 level-3 nodes in x <= 0.5, 3 x 5 of them on the level-2
-    // lattice; 3D: 5 x 9 x 9 and 3 x 5 x 5.
+    const std::string name =
+      std::to_string(dim) +
+      (offset == 1 ? "D, parents: " : "D, grandparents: ");
+    // Parents: 5 x 9 level-3 nodes in x <= 0.5, 3 x 5 of them on the
+    // level-2 lattice; 3D: 5 x 9 x 9 and 3 x 5 x 5. Grandparents: those and
+    // the level-2 nodes in x >= 0.5, 45 + 3 x 5 - 5 = 55, 9 of them on the
+    // level-1 lattice; 3D: 405 + 3 x 5 x 5 - 5 x 5 = 455 and 27.
     out << name << "nodes off the coarse lattice: " << all_fine_nodes.size()
         << '\n';
     out << name << "interpolated velocities - dim x nodes off the coarse "
@@ -151,7 +167,8 @@ namespace
             {
               const auto [component, vertex] = fe.system_to_component_index(i);
               const bool interpolated =
-                cell->level() == 3 && !on_lattice(cell->vertex(vertex), 4.);
+                cell->level() > flow_level &&
+                !on_lattice(cell->vertex(vertex), n_lattice);
               const unsigned int part =
                 (component < dim ? 0 : 1) + (interpolated ? 2 : 0);
               if (dofs[i] < numbering.start(part) ||
@@ -169,6 +186,35 @@ namespace
     out << name << "owned sets partition 0..n-1: "
         << (Utilities::MPI::logical_or(!partition, comm) ? "NO" : "yes")
         << '\n';
+
+    // The weights of the element's vertices at each vertex of its cells.
+    const vefs::FlowElements<dim> elements = FlowMesh<dim>::elements(offset);
+    double                        weight_error = 0, position_error = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && elements.on_coarser_element(cell))
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const auto element = elements.element(cell);
+            double     sum     = 0;
+            Point<dim> x;
+            for (const auto &[vertex, weight] :
+                 elements.vertex_weights(cell, v))
+              {
+                sum += weight;
+                x += weight * element->vertex(vertex);
+              }
+            weight_error = std::max(weight_error, std::abs(sum - 1));
+            position_error =
+              std::max(position_error, x.distance(cell->vertex(v)));
+          }
+    unit_test::check_below(out,
+                           name + "vertex weights: |sum - 1|",
+                           Utilities::MPI::max(weight_error, comm),
+                           1e-14);
+    unit_test::check_below(out,
+                           name + "vertex weights: |sum w x - vertex|",
+                           Utilities::MPI::max(position_error, comm),
+                           1e-14);
   }
 
   template <int dim>
@@ -178,7 +224,7 @@ namespace
     const MPI_Comm            comm = MPI_COMM_WORLD;
     const FlowMesh<dim>       mesh;
     DoFHandler<dim>           renumbered(mesh.triangulation);
-    const vefs::FlowNumbering numbering = mesh.number(renumbered, false);
+    const vefs::FlowNumbering numbering = mesh.number(renumbered, 0);
     DoFHandler<dim>           reference(mesh.triangulation);
     reference.distribute_dofs(mesh.collection);
     std::vector<unsigned int> block_component(dim + 1, 0);
@@ -210,8 +256,10 @@ int
 main(int argc, char **argv)
 {
   return unit_test::run(argc, argv, [](std::ostream &out) {
-    check_parents<2>(out);
-    check_parents<3>(out);
+    check_coarser<2>(out, 1);
+    check_coarser<3>(out, 1);
+    check_coarser<2>(out, 2);
+    check_coarser<3>(out, 2);
     check_finest<2>(out);
     check_finest<3>(out);
   });

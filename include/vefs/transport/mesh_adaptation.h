@@ -147,6 +147,13 @@ namespace vefs
 
     const unsigned int min_level, bulk_level, max_level;
 
+    /**
+     * Cells finer than this level stay on the rank of their ancestor on it
+     * (SubtreePartition: the flow's elements two or more levels coarser
+     * than the finest cells); negative: p4est's partition as it is.
+     */
+    int subtree_level = -1;
+
   private:
     /**
      * The level of a cell with the level set @p psi. Where psi has been
