@@ -9,9 +9,12 @@ namespace vefs
   double
   estimated_cells(const Parameters &parameters);
 
-  /** Bytes of memory a run needs per cell (measured, with a margin). */
+  /** Bytes of memory a run needs per cell (measured, with a margin), with
+   * the flow's cells @p flow_level_offset levels coarser than the finest
+   * ('Flow/Flow cells'). */
   double
-  bytes_per_cell(const unsigned int dimension);
+  bytes_per_cell(const unsigned int dimension,
+                 const unsigned int flow_level_offset);
 
   /**
    * Refuse a scene whose time step and end time imply more steps than
