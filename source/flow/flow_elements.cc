@@ -74,16 +74,6 @@ namespace vefs
   }
 
   template <int dim>
-  bool
-  FlowElements<dim>::represents_element(const CellIterator &cell) const
-  {
-    for (const auto &other : cells_of(element(cell)))
-      if (other->is_locally_owned())
-        return other == cell;
-    return false;
-  }
-
-  template <int dim>
   void
   FlowElements<dim>::add_restricted_to_element(
     const FiniteElement<dim>        &fe,

@@ -11,6 +11,11 @@
 //   them). FlowElements::vertex_weights() at each vertex of these cells:
 //   the weights sum to 1 and the weighted element vertices are the vertex
 //   (Q1 interpolation reproduces linear functions), to round-off.
+//   The interpolation and deal.II's hanging-node constraints together give
+//   every node of a linear field its value from the unconstrained ones
+//   (below 1e-12), on the mesh refined for x < 0.25 only, where 12 (2D)
+//   and 224 (3D) unknowns both hang and are interpolated, with
+//   grandparents inside the elements.
 // - 'Flow cells = finest': no interpolated dofs, and the numbering is
 //   deal.II's DoFRenumbering::component_wise() itself, dof by dof.
 // Exact integers: 1 and 2 ranks print the same; the nodes off the lattice
@@ -22,14 +27,18 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_renumbering.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/hp/fe_collection.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <vefs/flow/flow_elements.h>
 #include <vefs/flow/flow_numbering.h>
+#include <vefs/transport/subtree_partition.h>
 
 #include <algorithm>
 #include <array>
@@ -45,20 +54,34 @@ namespace
   /**
    * The unit square or cube, level 2, the cells with centre x < 0.5
    * refined to level 3; the flow's elements on it as StokesStep's: Q1^(dim
-   * + 1), and FE_Nothing (not used here).
+   * + 1), and FE_Nothing (not used here). Partitioned as a simulation with
+   * 'Flow cells = grandparents' does: each level-1 cell's descendants on
+   * one rank (SubtreePartition).
    */
   template <int dim>
   struct FlowMesh
   {
-    FlowMesh()
+    /** Refined to level 3 where the cell centre has x < @p refined_below. */
+    FlowMesh(const double refined_below = 0.5)
       : triangulation(MPI_COMM_WORLD)
     {
       GridGenerator::hyper_cube(triangulation, 0, 1);
       triangulation.refine_global(2);
       for (const auto &cell : triangulation.active_cell_iterators())
-        if (cell->is_locally_owned() && cell->center()[0] < 0.5)
+        if (cell->is_locally_owned() && cell->center()[0] < refined_below)
           cell->set_refine_flag();
       triangulation.execute_coarsening_and_refinement();
+      const vefs::SubtreePartition<dim> partition(
+        1,
+        [](const typename Triangulation<dim>::cell_iterator &,
+           const typename Triangulation<dim>::CellStatus) { return 1u; });
+      triangulation.signals.weight.connect(
+        [&partition](const typename Triangulation<dim>::cell_iterator &cell,
+                     const typename Triangulation<dim>::CellStatus     status) {
+          return partition.weight(cell, status);
+        });
+      triangulation.repartition();
+      triangulation.signals.weight.disconnect_all_slots();
       collection.push_back(FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1));
       collection.push_back(
         FESystem<dim>(FE_Nothing<dim>(), dim, FE_Nothing<dim>(), 1));
@@ -217,6 +240,84 @@ namespace
                            1e-14);
   }
 
+  /**
+   * The interpolation and deal.II's hanging-node constraints together (as
+   * StokesStep makes them) reproduce a linear field, which the elements'
+   * Q1 space holds: given at the unknowns that are not constrained, every
+   * node gets its value. On a mesh refined to level 3 for x < 0.25 only,
+   * so that with grandparents (level-1 elements) nodes hang within an
+   * element, between its level-2 and level-3 cells.
+   */
+  template <int dim>
+  void
+  check_constraints(std::ostream &out, const unsigned int offset)
+  {
+    const MPI_Comm      comm = MPI_COMM_WORLD;
+    const FlowMesh<dim> mesh(0.25);
+    DoFHandler<dim>     dof_handler(mesh.triangulation);
+    mesh.number(dof_handler, offset);
+    const IndexSet   &owned = dof_handler.locally_owned_dofs();
+    const std::string name =
+      std::to_string(dim) +
+      (offset == 1 ? "D, parents: " : "D, grandparents: ");
+    vefs::FlowElements<dim> constrained = FlowMesh<dim>::elements(offset);
+    IndexSet                relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    constrained.exchange_element_dofs(dof_handler, 0, relevant);
+    IndexSet touched = relevant;
+    touched.add_indices(constrained.far_element_dofs());
+    AffineConstraints<double> constraints(touched);
+    constrained.make_interpolation_constraints(dof_handler, 0, constraints);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    constraints.close();
+    // The nodes that hang and are interpolated: (dim + 1) x 4 in 2D (x =
+    // 0.25, y = 1/8, 3/8, 5/8, 7/8), (dim + 1) x 56 in 3D (9 x 9 - 5 x 5).
+    const IndexSet interpolated = constrained.interpolated_dofs(dof_handler, 0);
+    AffineConstraints<double> hanging(touched);
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging);
+    unsigned int both = 0;
+    for (const auto dof : owned)
+      both += interpolated.is_element(dof) && hanging.is_constrained(dof);
+    out << name << "unknowns both hanging and interpolated: "
+        << Utilities::MPI::sum(both, comm) << '\n';
+    const auto linear = [](const Point<dim> &x, const unsigned int c) {
+      double value = 1. + c;
+      for (unsigned int d = 0; d < dim; ++d)
+        value += (d + 2. + c) * x[d];
+      return value;
+    };
+    // Trilinos vectors, as StokesStep's (deal.II 9.4's
+    // LinearAlgebra::distributed::Vector hung on 2 ranks building its
+    // partitioner for this numbering).
+    TrilinosWrappers::MPI::Vector owned_field(owned, comm);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int c = 0; c <= dim; ++c)
+            {
+              const auto dof = cell->vertex_dof_index(v, c, 0);
+              if (owned.is_element(dof) && !constraints.is_constrained(dof))
+                owned_field(dof) = linear(cell->vertex(v), c);
+            }
+    owned_field.compress(VectorOperation::insert);
+    constraints.distribute(owned_field);
+    TrilinosWrappers::MPI::Vector field(owned, touched, comm);
+    field              = owned_field;
+    double field_error = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int c = 0; c <= dim; ++c)
+            field_error =
+              std::max(field_error,
+                       std::abs(field(cell->vertex_dof_index(v, c, 0)) -
+                                linear(cell->vertex(v), c)));
+    unit_test::check_below(out,
+                           name + "constraints reproduce a linear field",
+                           Utilities::MPI::max(field_error, comm),
+                           1e-12);
+  }
+
   template <int dim>
   void
   check_finest(std::ostream &out)
@@ -260,6 +361,11 @@ main(int argc, char **argv)
     check_coarser<3>(out, 1);
     check_coarser<2>(out, 2);
     check_coarser<3>(out, 2);
+    for (const unsigned int offset : {1u, 2u})
+      {
+        check_constraints<2>(out, offset);
+        check_constraints<3>(out, offset);
+      }
     check_finest<2>(out);
     check_finest<3>(out);
   });

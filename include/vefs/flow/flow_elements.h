@@ -190,11 +190,14 @@ namespace vefs
 
     /**
      * Whether the owned @p cell, on a coarser element, is the element's
-     * first owned cell (cells_of()): the one through which a loop over the
-     * owned cells visits the element once.
+     * first cell (cells_of(); all are owned): the one through which a loop
+     * over the owned cells visits the element once.
      */
     bool
-    represents_element(const CellIterator &cell) const;
+    represents_element(const CellIterator &cell) const
+    {
+      return corner_cell(cell, 0) == cell;
+    }
 
     /**
      * Add the cell matrix @p fine of the active @p cell, on a coarser
