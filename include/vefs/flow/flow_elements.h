@@ -19,11 +19,11 @@ namespace vefs
   /**
    * The elements of the flow's Q1-Q1 space ('Flow/Flow cells'), k levels
    * coarser than the finest cells ('Maximum level'): with k = 0 ('finest')
-   * every cell is its own element; with k > 0 ('parents': 1) every cell
-   * finer than the flow level (the finest level minus k) shares the element
-   * of its ancestor on the flow level. The flow's velocity and pressure are
-   * Q1 on that ancestor while the liquid domain is still cut out of the
-   * finest cells (the seed solved its flow on 5 mm cells over a 1 mm
+   * every cell is its own element; with k > 0 ('parents' 1, 'grandparents'
+   * 2) every cell finer than the flow level (the finest level minus k)
+   * shares the element of its ancestor on the flow level. The flow's velocity
+   * and pressure are Q1 on that ancestor while the liquid domain is still cut
+   * out of the finest cells (the seed solved its flow on 5 mm cells over a 1 mm
    * transport grid). The cells keep their own degrees of freedom; those at
    * nodes that are not vertices of their element are interpolated from the
    * element's: numbered after the flow space's own (FlowNumbering), they
