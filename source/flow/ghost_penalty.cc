@@ -201,7 +201,6 @@ namespace vefs
                 {
                   if (element->at_boundary(f))
                     continue;
-                  const unsigned int direction = f / 2;
                   // The element's cells on face f, the first at its
                   // lowest corner there.
                   std::vector<typename DoFHandler<dim>::active_cell_iterator>
