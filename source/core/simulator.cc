@@ -301,12 +301,8 @@ namespace vefs
     if (parameters.flow.flow_level_offset >= 2)
       levels.subtree_level = static_cast<int>(parameters.mesh.max_level) -
                              parameters.flow.flow_level_offset;
-    const SubtreePartition<dim> partition(levels.subtree_level, cell_weight);
-    triangulation.signals.weight.connect(
-      [partition](const typename Triangulation<dim>::cell_iterator &cell,
-                  const typename Triangulation<dim>::CellStatus     status) {
-        return partition.weight(cell, status);
-      });
+    SubtreePartition<dim>(levels.subtree_level, cell_weight)
+      .connect_to(triangulation);
     locator =
       std::make_unique<BoxMeshLocator<dim>>(triangulation,
                                             cavity,

@@ -50,9 +50,8 @@ namespace vefs
   }
 
   template <int dim>
-  const std::vector<std::pair<unsigned int, double>> &
-  FlowElements<dim>::vertex_weights(const CellIterator &cell,
-                                    const unsigned int  v) const
+  const typename FlowElements<dim>::CellWeights &
+  FlowElements<dim>::weights_of(const CellIterator &cell) const
   {
     // The cell's place in its element's lattice: bit d of each child number
     // on the way up is one binary digit of its index in direction d.
@@ -70,7 +69,7 @@ namespace vefs
     unsigned int position = 0;
     for (unsigned int d = dim; d-- > 0;)
       position = (position << depth) | index[d];
-    return descendant_vertex_weights[depth - 1][position][v];
+    return descendant_vertex_weights[depth - 1][position];
   }
 
   template <int dim>
@@ -92,13 +91,14 @@ namespace vefs
         rows.push_back(dof_of[component][v]);
 
     // fine P in the rows of the components, then P^T (fine P).
-    FullMatrix<double> &right = restriction_scratch;
+    const CellWeights  &weights = weights_of(cell);
+    FullMatrix<double> &right   = restriction_scratch;
     right.reinit(n, n);
     for (const unsigned int component : components)
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
           const unsigned int j = dof_of[component][v];
-          for (const auto &[vertex, weight] : vertex_weights(cell, v))
+          for (const auto &[vertex, weight] : weights[v])
             {
               const unsigned int J = dof_of[component][vertex];
               for (const unsigned int i : rows)
@@ -109,7 +109,7 @@ namespace vefs
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
           const unsigned int i = dof_of[component][v];
-          for (const auto &[vertex, weight] : vertex_weights(cell, v))
+          for (const auto &[vertex, weight] : weights[v])
             {
               const unsigned int I = dof_of[component][vertex];
               for (const unsigned int j : rows)
@@ -135,12 +135,13 @@ namespace vefs
                                                const Vector<double>     &fine,
                                                Vector<double> &coarse) const
   {
-    const unsigned int n      = fe.n_dofs_per_cell();
-    const auto         dof_of = dofs_by_component_and_vertex(fe);
+    const unsigned int n       = fe.n_dofs_per_cell();
+    const auto         dof_of  = dofs_by_component_and_vertex(fe);
+    const CellWeights &weights = weights_of(cell);
     for (unsigned int i = 0; i < n; ++i)
       {
         const auto [component, cell_vertex] = fe.system_to_component_index(i);
-        for (const auto &[vertex, weight] : vertex_weights(cell, cell_vertex))
+        for (const auto &[vertex, weight] : weights[cell_vertex])
           coarse(dof_of[component][vertex]) += weight * fine(i);
       }
   }
@@ -164,11 +165,11 @@ namespace vefs
                 domain.location(cell);
               continue;
             }
-          const auto cells = cells_of(element(cell));
           // An element once, from its first cell.
-          if (cells.front() != cell)
+          if (!represents_element(cell))
             continue;
-          bool all_full = true, all_empty = true;
+          const auto cells    = cells_of(element(cell));
+          bool       all_full = true, all_empty = true;
           for (const auto &other : cells)
             {
               AssertThrow(other->is_locally_owned(),
@@ -272,13 +273,13 @@ namespace vefs
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial() && cell->active_fe_index() == fe_index &&
           on_coarser_element(cell))
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            const auto &weights = vertex_weights(cell, v);
+        {
+          const CellWeights &weights = weights_of(cell);
+          for (const unsigned int v : cell->vertex_indices())
             // A vertex of the element is its own unknown.
-            if (weights.size() > 1)
-              function(cell, v, weights);
-          }
+            if (weights[v].size() > 1)
+              function(cell, v, weights[v]);
+        }
   }
 
   template <int dim>

@@ -338,15 +338,14 @@ namespace vefs
     if (far.is_empty())
       return;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_ghost() && cell->active_fe_index() == liquid_index &&
-          elements.on_coarser_element(cell) &&
-          elements.element(cell)->at_boundary())
-        for (const unsigned int f : elements.element(cell)->face_indices())
-          if (elements.element(cell)->at_boundary(f))
+      if (const auto element = elements.element(cell);
+          cell->is_ghost() && cell->active_fe_index() == liquid_index &&
+          elements.on_coarser_element(cell) && element->at_boundary())
+        for (const unsigned int f : element->face_indices())
+          if (element->at_boundary(f))
             {
-              const types::boundary_id wall =
-                elements.element(cell)->face(f)->boundary_id();
-              const WallType type = parameters.cavity.wall_type[wall];
+              const types::boundary_id wall = element->face(f)->boundary_id();
+              const WallType           type = parameters.cavity.wall_type[wall];
               if (type != WallType::no_slip && type != WallType::slip &&
                   type != WallType::velocity)
                 continue;
@@ -371,8 +370,7 @@ namespace vefs
                       if (type == WallType::velocity)
                         constraints.set_inhomogeneity(
                           dof,
-                          wall_velocity[wall]
-                            ->value(elements.element(cell)->vertex(v), c));
+                          wall_velocity[wall]->value(element->vertex(v), c));
                     }
                 }
             }

@@ -60,6 +60,17 @@ namespace vefs
   }
 
   template <int dim>
+  void
+  SubtreePartition<dim>::connect_to(
+    parallel::distributed::Triangulation<dim> &triangulation) const
+  {
+    triangulation.signals.weight.connect(
+      [partition = *this](const CellIterator &cell, const CellStatus status) {
+        return partition.weight(cell, status);
+      });
+  }
+
+  template <int dim>
   bool
   subtrees_split(const parallel::distributed::Triangulation<dim> &triangulation,
                  const int                                        level)

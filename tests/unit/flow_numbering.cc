@@ -71,15 +71,11 @@ namespace
         if (cell->is_locally_owned() && cell->center()[0] < refined_below)
           cell->set_refine_flag();
       triangulation.execute_coarsening_and_refinement();
-      const vefs::SubtreePartition<dim> partition(
+      vefs::SubtreePartition<dim>(
         1,
         [](const typename Triangulation<dim>::cell_iterator &,
-           const typename Triangulation<dim>::CellStatus) { return 1u; });
-      triangulation.signals.weight.connect(
-        [&partition](const typename Triangulation<dim>::cell_iterator &cell,
-                     const typename Triangulation<dim>::CellStatus     status) {
-          return partition.weight(cell, status);
-        });
+           const typename Triangulation<dim>::CellStatus) { return 1u; })
+        .connect_to(triangulation);
       triangulation.repartition();
       triangulation.signals.weight.disconnect_all_slots();
       collection.push_back(FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1));

@@ -52,15 +52,11 @@ namespace
         dim>::mesh_reconstruction_after_repartitioning);
     GridGenerator::hyper_cube(triangulation, 0, 1);
     triangulation.refine_global(1);
-    const vefs::SubtreePartition<dim> partition(
+    vefs::SubtreePartition<dim>(
       level,
       [](const typename Triangulation<dim>::cell_iterator &,
-         const typename Triangulation<dim>::CellStatus) { return 1u; });
-    triangulation.signals.weight.connect(
-      [&partition](const typename Triangulation<dim>::cell_iterator &cell,
-                   const typename Triangulation<dim>::CellStatus     status) {
-        return partition.weight(cell, status);
-      });
+         const typename Triangulation<dim>::CellStatus) { return 1u; })
+      .connect_to(triangulation);
     for (unsigned int round = 0; round < 3; ++round)
       {
         for (const auto &cell : triangulation.active_cell_iterators())

@@ -236,9 +236,18 @@ namespace vefs
                               Vector<double>           &coarse) const;
 
     /** The non-zero weights (vertex, weight) of the element's vertices at
-     * vertex @p v of @p cell, which is on a coarser element. */
+     * each vertex of @p cell, which is on a coarser element: [v]. */
+    using CellWeights =
+      std::vector<std::vector<std::pair<unsigned int, double>>>;
+    const CellWeights &
+    weights_of(const CellIterator &cell) const;
+
+    /** The same at vertex @p v of @p cell. */
     const std::vector<std::pair<unsigned int, double>> &
-    vertex_weights(const CellIterator &cell, const unsigned int v) const;
+    vertex_weights(const CellIterator &cell, const unsigned int v) const
+    {
+      return weights_of(cell)[v];
+    }
 
   private:
     /**

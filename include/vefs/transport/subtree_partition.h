@@ -39,6 +39,11 @@ namespace vefs
     unsigned int
     weight(const CellIterator &cell, const CellStatus status) const;
 
+    /** Give @p triangulation's partition these weights (a copy of this
+     * object is kept in its signal). */
+    void
+    connect_to(parallel::distributed::Triangulation<dim> &triangulation) const;
+
   private:
     const int        level;
     const CellWeight cell_weight;
