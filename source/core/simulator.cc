@@ -389,7 +389,8 @@ namespace vefs
                                              step.tau,
                                              step.controlled,
                                              cfl,
-                                             statistics.max_velocity);
+                                             statistics.max_velocity,
+                                             parameters.flow.flow_level_offset);
     if (!problem.empty())
       stop(time.step() + 1, problem, domain, true);
     time.start_step(step.tau, statistics.max_velocity);

@@ -44,7 +44,11 @@ namespace vefs
   /**
    * Before a step of length @p tau: its CFL number, the step count, and
    * @p controlled_tau, the step that the CFL and strain bounds allow (before
-   * the end time and output times shorten it).
+   * the end time and output times shorten it). @p cfl is the step's CFL
+   * number on the finest cells; the bound applies to the cells of the
+   * velocity, 2^@p flow_level_offset times larger ('Flow/Flow cells'):
+   * the semi-Lagrangian transport is stable at any CFL number, and a
+   * blown-up velocity shows on its own cells.
    */
   std::string
   step_problem(const HealthCheckParameters &parameters,
@@ -53,7 +57,8 @@ namespace vefs
                const double                 tau,
                const double                 controlled_tau,
                const double                 cfl,
-               const double                 max_velocity);
+               const double                 max_velocity,
+               const unsigned int           flow_level_offset);
 
   /**
    * After a step: the fields, the volume, and @p non_finite_statistic, the
