@@ -150,6 +150,18 @@ namespace vefs
   }
 
   bool
+  TransportParameters::feet_linear_without_remap() const
+  {
+    // An automatic stress interpolation follows the velocity's, and an
+    // automatic remap distance is 0 for a flow (resolve()).
+    return !velocity_is_prescribed() &&
+           level_set_interpolation == LevelSetInterpolation::linear &&
+           velocity_interpolation == VelocityInterpolation::linear &&
+           stress_interpolation != StressInterpolation::limited_cubic &&
+           (automatic_remap_distance || remap_distance == 0);
+  }
+
+  bool
   TransportParameters::cubic_stress_interpolation() const
   {
     Assert(stress_interpolation != StressInterpolation::automatic,

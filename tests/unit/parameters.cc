@@ -13,7 +13,8 @@
 //    stress interpolation, by the velocity interpolation; the remap
 //    distance by the level set interpolation, a prescribed velocity and
 //    the band placement; the band width and miss tolerance by the band
-//    placement.
+//    placement; the band placement by the strain bound, the target CFL and
+//    the interpolation at the feet.
 
 #include "unit_test.h"
 
@@ -63,8 +64,8 @@ main()
            "defaults: members equal the handler's values",
            std::stod(prm.get({"Time"}, "End time")) ==
                parameters.time.end_time &&
-             prm.get({"Mesh refinement"}, "Band placement") == "widened" &&
-             !parameters.mesh.band_predicted() &&
+             prm.get({"Mesh refinement"}, "Band placement") == "automatic" &&
+             parameters.mesh.band_placement == vefs::BandPlacement::automatic &&
              (prm.get({"Transport"}, "Volume correction") == "true") ==
                parameters.transport.volume_correction &&
              prm.get({"Walls"}, "y+") == "open" &&
@@ -358,5 +359,52 @@ main()
           out << entry.substr(6, entry.size() - 7) << ": " << error.what()
               << '\n';
         }
+  }
+
+  {
+    // 'Band placement = automatic': 'predicted, one change' for an elastic
+    // solid whose steps 'Strain bound = local' keeps fixed, without a
+    // target CFL, with linear interpolation at the feet and no remap;
+    // 'widened' otherwise. Explicit values stay.
+    const auto placement = [](const std::string &time,
+                              const std::string &transport,
+                              const std::string &mesh) {
+      write("band.prm",
+            "set Dimension = 2\nsubsection Material\n"
+            "  set Polymer viscosity = 0.1\n  set Relaxation time = 0.005\n"
+            "  set Alpha = 0\nend\n"
+            "subsection Time\n" +
+              time + "end\nsubsection Transport\n" + transport +
+              "end\nsubsection Mesh refinement\n" + mesh + "end\n");
+      vefs::Parameters parameters;
+      ParameterHandler prm;
+      parameters.declare(prm);
+      vefs::read_parameter_file(prm,
+                                "band.prm",
+                                vefs::Parameters::moved_entries);
+      parameters.check();
+      return std::string(!parameters.mesh.band_predicted() ? "widened"
+                         : parameters.mesh.band_in_one_change()
+                           ? "predicted, one change"
+                           : "predicted");
+    };
+    const std::string local = "  set Strain bound = local\n";
+    out << "band placement automatic, strain bound step: "
+        << placement("", "", "") << '\n';
+    out << "band placement automatic, strain bound local: "
+        << placement(local, "", "") << '\n';
+    out << "the same, target CFL 5: "
+        << placement(local + "  set Target CFL = 5\n", "", "") << '\n';
+    for (const std::string feet : {"Level set interpolation = cubic",
+                                   "Velocity interpolation = limited cubic",
+                                   "Stress interpolation = limited cubic",
+                                   "Remap distance = 3"})
+      out << "the same, " << feet << ": "
+          << placement(local, "  set " + feet + "\n", "") << '\n';
+    out << "band placement predicted, strain bound local: "
+        << placement(local, "", "  set Band placement = predicted\n") << '\n';
+    out << "band placement predicted, one change, strain bound step: "
+        << placement("", "", "  set Band placement = predicted, one change\n")
+        << '\n';
   }
 }

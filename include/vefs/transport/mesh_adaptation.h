@@ -14,6 +14,8 @@ namespace vefs
   /** How the band of finest cells keeps up with a moving surface. */
   enum class BandPlacement
   {
+    /** As the steps and the feet allow: MeshParameters::resolve(). */
+    automatic,
     /** Widened by the CFL number; the mesh adapted after the advection. */
     widened,
     /** Refined ahead of the surface the characteristics predict. */
@@ -32,14 +34,18 @@ namespace vefs
     declare(dealii::ParameterHandler &prm);
 
     /**
-     * 'automatic' band width and miss tolerance take the values measured
-     * for the placement (doc/bouncing_ball_3d_study.md, "Settings
-     * compared"): a band of 2 finest cells and a miss tolerance of 0.001
-     * for the predicted placements, 4 cells (widened by the CFL number) and
-     * 0 otherwise.
+     * An 'automatic' band placement becomes 'predicted, one change' where
+     * @p steps_fixed_and_feet_linear (the steps are not shortened at an
+     * impact, so the CFL number reaches tens of finest cells and a band
+     * widened by it fills the mesh; and the feet read the Q1 fields that
+     * placement keeps), 'widened' otherwise. 'automatic' band width and
+     * miss tolerance then take the values measured for the placement
+     * (doc/bouncing_ball_3d_study.md, "Settings compared"): a band of 2
+     * finest cells and a miss tolerance of 0.001 for the predicted
+     * placements, 4 cells (widened by the CFL number) and 0 otherwise.
      */
     void
-    resolve();
+    resolve(const bool steps_fixed_and_feet_linear);
 
     /** Throws InputError for levels out of order or a stray tolerance. */
     void
@@ -52,6 +58,8 @@ namespace vefs
     bool
     band_predicted() const
     {
+      Assert(band_placement != BandPlacement::automatic,
+             dealii::ExcMessage("MeshParameters::resolve() first."));
       return band_placement != BandPlacement::widened;
     }
 
@@ -71,7 +79,7 @@ namespace vefs
     unsigned int  max_level            = 6;
     double        band_width           = 4;
     bool          automatic_band_width = true;
-    BandPlacement band_placement       = BandPlacement::widened;
+    BandPlacement band_placement       = BandPlacement::automatic;
     /**
      * The fraction of the surface's cells that may be left coarser than the
      * finest level after the advection before the mesh changes again then

@@ -70,6 +70,15 @@ namespace vefs
     void
     resolve(const bool band_predicted);
 
+    /**
+     * Whether the feet read every field by linear interpolation and the
+     * surface is traced every step (remap distance 0), which 'Band
+     * placement = predicted, one change' needs; for a flow, before
+     * resolve() too.
+     */
+    bool
+    feet_linear_without_remap() const;
+
     /** The stress at the feet by limited cubic (after resolve()). */
     bool
     cubic_stress_interpolation() const;
