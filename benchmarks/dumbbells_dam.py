@@ -8,12 +8,14 @@ from the mean (doc/dumbbells.md).
 
 Both run to t = 0.25 s with the settings dumbbells need (first-order
 splitting, exponential stress update, 'Outside stress of cut cells =
-extension'), one rank, no visualization output; --reuse-seeds reads the
+extension'), one rank, no visualization output; the ensemble stress with
+'Material/Dumbbell variance reduction' (--estimator reduced, the default)
+or without (plain); --reuse-seeds reads the
 dumbbells' runs of an earlier call and runs the macroscopic one only.
 
 Usage (from the repository root):
   /usr/bin/python3 benchmarks/dumbbells_dam.py [--vefs build/vefs]
-      [--fields 400] [--seeds 1 2 3]
+      [--fields 400] [--seeds 1 2 3] [--estimator reduced|plain]
       [--results-dir benchmarks/results/dumbbells_dam] [--no-run]
 """
 
@@ -66,6 +68,8 @@ def main():
     parser.add_argument("--seeds", type=int, nargs="+", default=[1, 2, 3])
     parser.add_argument("--results-dir", default=os.path.join(
         ROOT, "benchmarks", "results", "dumbbells_dam"))
+    parser.add_argument("--estimator", default="reduced",
+                        choices=["reduced", "plain"])
     parser.add_argument("--no-run", action="store_true")
     parser.add_argument("--reuse-seeds", action="store_true")
     args = parser.parse_args()
@@ -74,10 +78,13 @@ def main():
     macro = run(args.vefs, os.path.join(args.results_dir, "macroscopic"), [],
                 args.no_run)
     seeds = [run(args.vefs,
-                 os.path.join(args.results_dir, "seed_%d" % seed),
+                 os.path.join(args.results_dir, "fields_%d_seed_%d_%s"
+                              % (args.fields, seed, args.estimator)),
                  ["Material/Stress model=dumbbells",
                   "Material/Dumbbell fields=%d" % args.fields,
-                  "Material/Dumbbell seed=%d" % seed],
+                  "Material/Dumbbell seed=%d" % seed,
+                  "Material/Dumbbell variance reduction=%s"
+                  % ("true" if args.estimator == "reduced" else "false")],
                  args.no_run or args.reuse_seeds)
              for seed in args.seeds]
 
@@ -93,7 +100,7 @@ def main():
 
     row("macroscopic", macro)
     for seed, r in zip(args.seeds, seeds):
-        row("N_f = %d, seed %d" % (args.fields, seed), r)
+        row("N_f = %d, seed %d, %s" % (args.fields, seed, args.estimator), r)
     n = len(seeds)
     if n > 1:
         cells = []

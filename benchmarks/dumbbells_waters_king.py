@@ -6,18 +6,21 @@ King, E = 1, beta = 1/9) on the mesh and step of tests/waters_king_2d.prm
 
 Usage (from the repository root):
   /usr/bin/python3 benchmarks/dumbbells_waters_king.py [--vefs build/vefs]
-      [--fields 100 400 1600] [--seeds 1 2 3]
+      [--fields 100 400 1600] [--seeds 1 2 3] [--estimators reduced plain]
       [--results-dir benchmarks/results/dumbbells]
       [--plot doc/dumbbells_waters_king.png] [--no-run]
 
-For every N_f and seed, one run with 'Material/Stress model = dumbbells',
-and one macroscopic run (the same scene and scheme). Reported per run: the
+For every N_f, seed and estimator of the stress, one run with
+'Material/Stress model = dumbbells' ('Dumbbell variance reduction' true:
+reduced, false: plain), and one macroscopic run (the same scene and
+scheme). Reported per run: the
 error of the centreline velocity against the exact series (scripts of
 tests/vefs_tools/waters_king.py), as the root mean square and the largest
 |U_sim - U_exact| / 1.5 over 0 < T <= 10, and the wall time per step;
-per N_f the mean over the seeds. The plot shows the centreline velocity
-of the first seed at each N_f with the series and the macroscopic run,
-and the RMS error against N_f with the N_f^(-1/2) slope. One rank; run it
+per N_f and estimator the mean over the seeds. The plot shows the
+centreline velocity of the first seed at each N_f (first estimator) with
+the series and the macroscopic run, and the RMS error against N_f for each
+estimator with the N_f^(-1/2) slope. One rank; run it
 on an otherwise idle machine for the timings.
 """
 
@@ -67,6 +70,8 @@ def main():
     parser.add_argument("--fields", type=int, nargs="+",
                         default=[100, 400, 1600])
     parser.add_argument("--seeds", type=int, nargs="+", default=[1, 2, 3])
+    parser.add_argument("--estimators", nargs="+", default=["reduced", "plain"],
+                        choices=["reduced", "plain"])
     parser.add_argument("--results-dir", default=os.path.join(
         ROOT, "benchmarks", "results", "dumbbells"))
     parser.add_argument("--plot",
@@ -85,24 +90,31 @@ def main():
           % (macroscopic["rms"], macroscopic["max"],
              1e3 * macroscopic["per_step"]))
     by_fields = {}
-    for n in args.fields:
-        for seed in args.seeds:
-            name = "fields_%d_seed_%d" % (n, seed)
-            r = run(args.vefs, os.path.join(args.results_dir, name),
-                    ["Material/Stress model=dumbbells",
-                     "Material/Dumbbell fields=%d" % n,
-                     "Material/Dumbbell seed=%d" % seed], args.no_run)
-            by_fields.setdefault(n, []).append(r)
-            print("| N_f = %d, seed %d | %.3g | %.3g | %.1f ms |"
-                  % (n, seed, r["rms"], r["max"], 1e3 * r["per_step"]))
+    for estimator in args.estimators:
+        for n in args.fields:
+            for seed in args.seeds:
+                name = "fields_%d_seed_%d_%s" % (n, seed, estimator)
+                r = run(args.vefs, os.path.join(args.results_dir, name),
+                        ["Material/Stress model=dumbbells",
+                         "Material/Dumbbell fields=%d" % n,
+                         "Material/Dumbbell seed=%d" % seed,
+                         "Material/Dumbbell variance reduction=%s"
+                         % ("true" if estimator == "reduced" else "false")],
+                        args.no_run)
+                by_fields.setdefault((estimator, n), []).append(r)
+                print("| %s, N_f = %d, seed %d | %.3g | %.3g | %.1f ms |"
+                      % (estimator, n, seed, r["rms"], r["max"],
+                         1e3 * r["per_step"]))
     print()
-    print("| N_f | mean RMS error | mean max error | wall time per step |")
-    print("|---|---|---|---|")
+    print("| estimator | N_f | mean RMS error | mean max error | "
+          "wall time per step |")
+    print("|---|---|---|---|---|")
     means = {}
-    for n, runs in by_fields.items():
-        means[n] = sum(r["rms"] for r in runs) / len(runs)
-        print("| %d | %.3g | %.3g | %.1f ms |"
-              % (n, means[n], sum(r["max"] for r in runs) / len(runs),
+    for (estimator, n), runs in by_fields.items():
+        means[(estimator, n)] = sum(r["rms"] for r in runs) / len(runs)
+        print("| %s | %d | %.3g | %.3g | %.1f ms |"
+              % (estimator, n, means[(estimator, n)],
+                 sum(r["max"] for r in runs) / len(runs),
                  1e3 * sum(r["per_step"] for r in runs) / len(runs)))
 
     if args.plot:
@@ -115,17 +127,21 @@ def main():
                   lw=2, label="exact (Waters & King)")
         left.plot(macroscopic["T"], macroscopic["U"], "k--",
                   label="macroscopic")
-        for n, runs in by_fields.items():
-            left.plot(runs[0]["T"], runs[0]["U"], lw=0.8,
-                      label="dumbbells, N_f = %d" % n)
+        for (estimator, n), runs in by_fields.items():
+            if estimator == args.estimators[0]:
+                left.plot(runs[0]["T"], runs[0]["U"], lw=0.8,
+                          label="dumbbells (%s), N_f = %d" % (estimator, n))
         left.set_xlabel("T = t / lambda")
         left.set_ylabel("centreline velocity / U_inf")
         left.legend(fontsize=8)
-        ns = sorted(means)
-        right.loglog(ns, [means[n] for n in ns], "o-",
-                     label="dumbbells (mean of %d seeds)" % len(args.seeds))
-        right.loglog(ns, [means[ns[0]] * math.sqrt(ns[0] / n) for n in ns],
-                     "k:", label="N_f^(-1/2)")
+        for estimator in args.estimators:
+            ns = sorted(n for (e, n) in means if e == estimator)
+            right.loglog(ns, [means[(estimator, n)] for n in ns], "o-",
+                         label="dumbbells, %s (mean of %d seeds)"
+                         % (estimator, len(args.seeds)))
+            right.loglog(ns, [means[(estimator, ns[0])] * math.sqrt(ns[0] / n)
+                              for n in ns], "k:", lw=0.8)
+        right.plot([], [], "k:", lw=0.8, label="N_f^(-1/2)")
         right.axhline(macroscopic["rms"], color="k", ls="--",
                       label="macroscopic")
         right.set_xlabel("N_f")

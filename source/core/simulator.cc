@@ -339,7 +339,8 @@ namespace vefs
     if (parameters.material.has_dumbbells())
       set_initial_dumbbells(fields,
                             rheology,
-                            parameters.material.dumbbell_seed);
+                            parameters.material.dumbbell_seed,
+                            parameters.material.dumbbell_variance_reduction);
     velocity->set_initial_velocity(fields);
     const double initial_volume = sharp_liquid_volume(fields, 0).volume;
     surface->start(fields, *level_set, initial_volume);

@@ -437,6 +437,14 @@ namespace vefs
             for (unsigned int d = 0; d < dim; ++d)
               text << ' ' << exact(node[d]);
           text << '\n';
+          if (!fields.dumbbell_controls.empty())
+            {
+              text << "dumbbell_controls";
+              for (const auto &p : fields.dumbbell_controls)
+                for (unsigned int d = 0; d < dim; ++d)
+                  text << ' ' << exact(p[d]);
+              text << '\n';
+            }
           const auto remap = history.scalars();
           text << "level_set_history " << remap.has_base << ' '
                << exact(remap.moved);
@@ -540,6 +548,20 @@ namespace vefs
                   node[d] = to_double(values[i + d]);
                 state.contact_state.push_back(node);
               }
+          }
+        // The equilibrium fields of the dumbbells' variance reduction; none
+        // without it (and in checkpoints written before it).
+        fields.dumbbell_controls.clear();
+        if (const auto found = entries.find("dumbbell_controls");
+            found != entries.end())
+          {
+            const auto &values = found->second;
+            if (values.size() != dim * fields.n_dumbbell_fields)
+              throw std::runtime_error(
+                "its dumbbell_controls do not hold one vector per field");
+            fields.dumbbell_controls.resize(fields.n_dumbbell_fields);
+            for (std::size_t i = 0; i < values.size(); ++i)
+              fields.dumbbell_controls[i / dim][i % dim] = to_double(values[i]);
           }
         s.wall_time            = to_double(value("wall_time"));
         state.initial_volume   = to_double(value("initial_volume"));

@@ -186,8 +186,9 @@ namespace vefs
   {
     // Exactly one rank owns the cell the locator finds. Components 0 to
     // dim - 1: the velocity; dim: the level set; then the stress (if any),
-    // and with dumbbells the mean square of each field's q_a q_b less the
-    // square of their mean: the variance over the fields.
+    // and with dumbbells the mean square of each field's q_a q_b (less its
+    // equilibrium field's p_a p_b, with variance reduction) less the square
+    // of their mean: the variance over the fields.
     constexpr unsigned int n_stress =
       TransportedFields<dim>::n_stress_components;
     const unsigned int  first_stress = dim + 1;
@@ -219,6 +220,9 @@ namespace vefs
                 symmetrize(outer_product(fields.dumbbell_at(dof_cell, v, f),
                                          fields.dumbbell_at(dof_cell, v, f)));
           }
+        for (unsigned int f = 0; f < fields.dumbbell_controls.size(); ++f)
+          products[f] -= symmetrize(outer_product(fields.dumbbell_controls[f],
+                                                  fields.dumbbell_controls[f]));
         if (n_fields > 1)
           {
             SymmetricTensor<2, dim> mean, square;

@@ -128,16 +128,25 @@ namespace vefs
   } // namespace
 
   template <int dim>
+  SymmetricTensor<2, dim>
+  control_moment(const TransportedFields<dim> &fields)
+  {
+    return fields.dumbbell_controls.empty()
+             ? unit_symmetric_tensor<dim>()
+             : dumbbells::second_moment(fields.dumbbell_controls);
+  }
+
+  template <int dim>
   void
   set_ensemble_stress(TransportedFields<dim> &fields,
                       const Rheology<dim>    &rheology)
   {
-    const double G = rheology.shear_modulus();
+    const double                  G       = rheology.shear_modulus();
+    const SymmetricTensor<2, dim> control = control_moment(fields);
     for (const auto &node : fields.nodes())
-      fields.set_stress(node,
-                        G *
-                          (dumbbells::second_moment(node_fields(fields, node)) -
-                           unit_symmetric_tensor<dim>()));
+      fields.set_stress(
+        node,
+        G * (dumbbells::second_moment(node_fields(fields, node)) - control));
     fields.finalize();
   }
 
@@ -145,10 +154,14 @@ namespace vefs
   void
   set_initial_dumbbells(TransportedFields<dim> &fields,
                         const Rheology<dim>    &rheology,
-                        const unsigned int      seed)
+                        const unsigned int      seed,
+                        const bool              variance_reduction)
   {
     const auto sample =
       dumbbells::equilibrium_sample<dim>(fields.n_dumbbell_fields, seed);
+    fields.dumbbell_controls.clear();
+    if (variance_reduction)
+      fields.dumbbell_controls = sample;
     bool not_positive = false;
     for (const auto &node : fields.nodes())
       {
@@ -205,6 +218,10 @@ namespace vefs
     // E <q* q*^T> E^T (the stress slots).
     VectorType sum;
     fields.initialize_vector(sum);
+    // The stress components hold G (<q* q*^T> - <p p^T>) (set_ensemble_
+    // stress()): <q* q*^T> is their conformation plus this.
+    const SymmetricTensor<2, dim> control_offset =
+      control_moment(fields) - unit_symmetric_tensor<dim>();
     const StressUpdateReport report = for_each_liquid_vertex<dim>(
       fields,
       velocity,
@@ -218,7 +235,7 @@ namespace vefs
         // (set_ensemble_stress() before the flow step): no loop over them
         // for every cell around the vertex.
         const Tensor<2, dim> c(
-          rheology.conformation(fields.stress_at(cell, v)));
+          rheology.conformation(fields.stress_at(cell, v)) + control_offset);
         const SymmetricTensor<2, dim> carried =
           symmetrize(E * c * transpose(E));
         const double weight = cell->measure();
@@ -261,6 +278,9 @@ namespace vefs
                               i,
                               keep * (T * q_star[i]) + noise * increments[i]);
       }
+    for (unsigned int i = 0; i < fields.dumbbell_controls.size(); ++i)
+      fields.dumbbell_controls[i] =
+        keep * fields.dumbbell_controls[i] + noise * increments[i];
     fields.finalize();
     set_ensemble_stress(fields, rheology);
     return report;
@@ -284,11 +304,14 @@ namespace vefs
     const unsigned int,                                                    \
     const unsigned int,                                                    \
     const unsigned int);                                                   \
+  template SymmetricTensor<2, dim> control_moment<dim>(                    \
+    const TransportedFields<dim> &);                                       \
   template void set_ensemble_stress<dim>(TransportedFields<dim> &,         \
                                          const Rheology<dim> &);           \
   template void set_initial_dumbbells<dim>(TransportedFields<dim> &,       \
                                            const Rheology<dim> &,          \
-                                           const unsigned int);            \
+                                           const unsigned int,             \
+                                           const bool);                    \
   template StressUpdateReport update_dumbbells<dim>(                       \
     TransportedFields<dim> &,                                              \
     const typename TransportedFields<dim>::VectorType &,                   \

@@ -13,6 +13,13 @@
 //   fields at the nodes of liquid cells become F q*, exactly, and the
 //   ensemble stress equals update_stress() of the same advected stress;
 //   other nodes keep q*. 1 and 2 ranks.
+// - Variance reduction: a liquid at rest (alpha = 1, no velocity, no
+//   initial stress), 20 steps: the fields take the same increments as
+//   their equilibrium fields and stay equal to them, so the variance-
+//   reduced ensemble stress is zero up to round-off, where the plain
+//   estimator G (<q q^T> - I) has the noise of N_f = 50 fields (above
+//   0.01 G); the equilibrium fields follow p_i = sqrt(k) p_i + sqrt(1 - k)
+//   xi_i exactly. 1 and 2 ranks.
 // Tolerance: relative error below 1e-12 (round-off of a few tens of
 // operations), unless stated.
 
@@ -190,7 +197,7 @@ namespace
                        unit_test::SimpleShear(rate),
                        &initial_stress);
       }
-    vefs::set_initial_dumbbells(fields, elastic, 4);
+    vefs::set_initial_dumbbells(fields, elastic, 4, false);
     std::vector<std::vector<Tensor<1, 2>>> q_star;
     for (const auto &node : fields.nodes())
       {
@@ -261,6 +268,81 @@ namespace
     out << "nodes of liquid cells: " << Utilities::MPI::sum(n_liquid, comm)
         << '\n';
   }
+
+  void
+  check_variance_reduction(std::ostream &out)
+  {
+    const double                            tau      = 0.02;
+    const unsigned int                      n_fields = 50, seed = 3;
+    parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
+    GridGenerator::hyper_cube(triangulation, 0, 1, true);
+    triangulation.refine_global(3);
+
+    vefs::MaterialParameters material;
+    material.polymer_viscosity = 2;
+    material.relaxation_time   = 0.5;
+    material.alpha             = 1;
+    material.stress_model      = vefs::StressModel::dumbbells;
+    vefs::StressParameters stress;
+    stress.stress_update = vefs::StressUpdate::exponential;
+    const vefs::Rheology<2> liquid(material, stress, 0);
+    const double            G = liquid.shear_modulus();
+    const double            k = liquid.stress_factor(tau);
+
+    const ScalarFunctionFromFunctionObject<2> everywhere_liquid(
+      [](const Point<2> &) { return -1.; });
+    const Functions::ZeroFunction<2> at_rest(2);
+    std::vector<double>              largest_stress;
+    std::vector<Tensor<1, 2>>        expected_controls;
+    double                           control_error = 0;
+    for (const bool reduced : {true, false})
+      {
+        vefs::TransportedFields<2> fields(triangulation,
+                                          true,
+                                          false,
+                                          {},
+                                          n_fields);
+        fields.setup_dofs();
+        fields.interpolate(everywhere_liquid, at_rest);
+        vefs::set_initial_dumbbells(fields, liquid, seed, reduced);
+        if (reduced)
+          expected_controls = db::equilibrium_sample<2>(n_fields, seed);
+        const vefs::LiquidDomain<2> domain(fields);
+        for (unsigned int step = 1; step <= 20; ++step)
+          {
+            const auto xi = db::increments<2>(n_fields, seed, step);
+            vefs::update_dumbbells(fields,
+                                   fields.vector(),
+                                   domain,
+                                   liquid,
+                                   tau,
+                                   xi);
+            if (reduced)
+              for (unsigned int i = 0; i < n_fields; ++i)
+                expected_controls[i] = std::sqrt(k) * expected_controls[i] +
+                                       std::sqrt(1 - k) * xi[i];
+          }
+        if (reduced)
+          for (unsigned int i = 0; i < n_fields; ++i)
+            control_error = std::max(
+              control_error,
+              (fields.dumbbell_controls[i] - expected_controls[i]).norm());
+        double largest = 0;
+        for (const auto &node : fields.nodes())
+          largest = std::max(largest, fields.stress(node).norm() / G);
+        largest_stress.push_back(Utilities::MPI::max(largest, MPI_COMM_WORLD));
+      }
+    unit_test::check_below(out,
+                           "at rest, variance reduced, max |sigma| / G",
+                           largest_stress[0],
+                           1e-12);
+    out << "at rest, plain estimator, max |sigma| / G above 0.01: "
+        << (largest_stress[1] > 0.01 ? "yes" : "NO") << '\n';
+    unit_test::check_below(out,
+                           "at rest, equilibrium fields, |p - expected|",
+                           control_error,
+                           1e-12);
+  }
 } // namespace
 
 int
@@ -271,5 +353,6 @@ main(int argc, char **argv)
     check_point_pieces<3>(out);
     check_increments(out);
     check_field_update(out);
+    check_variance_reduction(out);
   });
 }

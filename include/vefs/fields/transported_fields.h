@@ -461,6 +461,13 @@ namespace vefs
     /** N_f; zero without dumbbells. */
     const unsigned int n_dumbbell_fields;
     /**
+     * With dumbbells and 'Material/Dumbbell variance reduction': the
+     * equilibrium fields p_1 .. p_N_f, one vector each for the whole domain
+     * and the same on every rank (doc/dumbbells.md, "Variance
+     * reduction"); empty otherwise.
+     */
+    std::vector<Tensor<1, dim>> dumbbell_controls;
+    /**
      * dim + 1, plus the stress components if there is a stress, plus dim
      * if there is an acceleration, plus dim N_f.
      */

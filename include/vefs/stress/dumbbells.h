@@ -76,17 +76,31 @@ namespace vefs
   /**
    * The fields at the start of a run: q_i(x) = chol(c_0(x)) q^_i, q^ an
    * equilibrium_sample() and c_0 = I + sigma_0 / G from the initial stress
-   * the fields hold, so that <q q^T> = c_0 exactly; then the ensemble stress.
-   * Throws InputError naming 'Initial liquid/Stress' where c_0 is not
-   * positive definite.
+   * the fields hold, so that <q q^T> = c_0 exactly; with
+   * @p variance_reduction the equilibrium fields p_i = q^_i
+   * (TransportedFields::dumbbell_controls, <p p^T> = I exactly); then the
+   * ensemble stress. Throws InputError naming 'Initial liquid/Stress' where
+   * c_0 is not positive definite.
    */
   template <int dim>
   void
   set_initial_dumbbells(TransportedFields<dim> &fields,
                         const Rheology<dim>    &rheology,
-                        const unsigned int      seed);
+                        const unsigned int      seed,
+                        const bool              variance_reduction);
 
-  /** The stress components of the fields := G (<q q^T> - I) at every node. */
+  /**
+   * <p p^T> of the equilibrium fields (TransportedFields::dumbbell_controls),
+   * the identity without them: what the ensemble stress subtracts.
+   */
+  template <int dim>
+  SymmetricTensor<2, dim>
+  control_moment(const TransportedFields<dim> &fields);
+
+  /**
+   * The stress components of the fields := G (<q q^T> - control_moment())
+   * at every node.
+   */
   template <int dim>
   void
   set_ensemble_stress(TransportedFields<dim> &fields,
@@ -100,10 +114,11 @@ namespace vefs
    * stress factor of the step, xi_i = @p increments, T the moment_map() from
    * <q* q*^T> to the cells' weighted mean of E <q* q*^T> E^T, nearest to
    * their mean E. The mean of <q q^T> over the increments is then the
-   * macroscopic update's c; with alpha = 0 (k = 1) it is that c. Then the
-   * ensemble stress. The stress components must hold the fields' ensemble
-   * stress on entry (set_ensemble_stress()). Returns what update_stress()
-   * returns.
+   * macroscopic update's c; with alpha = 0 (k = 1) it is that c. The
+   * equilibrium fields, if any, take the same increments without a flow:
+   * p_i = sqrt(k) p_i + sqrt(1 - k) xi_i. Then the ensemble stress. The
+   * stress components must hold the fields' ensemble stress on entry
+   * (set_ensemble_stress()). Returns what update_stress() returns.
    */
   template <int dim>
   StressUpdateReport

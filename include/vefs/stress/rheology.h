@@ -92,6 +92,12 @@ namespace vefs
     unsigned int dumbbell_fields = 100;
     /** Seed of the fields' initial vectors and Wiener increments. */
     unsigned int dumbbell_seed = 1;
+    /**
+     * Whether the ensemble stress subtracts that of equilibrium fields
+     * driven by the same increments (doc/dumbbells.md, "Variance
+     * reduction").
+     */
+    bool dumbbell_variance_reduction = true;
   };
 
   /** How the stress is updated after the flow step: subsection "Stress". */
