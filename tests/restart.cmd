@@ -6,7 +6,8 @@
 # must end like the uninterrupted one: every statistics column within 1e-6
 # of its largest value (wall_time and linear_iterations excepted) and the
 # same visualization series. The resumed parts run with RESUME_MPIRUN if it
-# is set (restart_fewer_ranks.cmd: 2 ranks, then 1), else with MPIRUN.
+# is set (restart_fewer_ranks.cmd: 2 ranks, then 1), else with MPIRUN; the
+# uninterrupted run with WHOLE_MPIRUN if it is set, else with MPIRUN.
 set -u
 source_prm=${TEST_SOURCE_DIR}/${RESTART_PRM:-restart.prm}
 resume_launcher=${RESUME_MPIRUN-${MPIRUN:-}}
@@ -23,7 +24,7 @@ show() { # log, status
 
 scene whole 0
 status=0
-${MPIRUN:-} "$VEFS" whole.prm > whole.log 2>&1 || status=$?
+${WHOLE_MPIRUN-${MPIRUN:-}} "$VEFS" whole.prm > whole.log 2>&1 || status=$?
 echo "uninterrupted run: exit status $status"
 
 echo "stopped by 'Stop after steps = 12', resumed twice:"

@@ -11,6 +11,7 @@
 #include <vefs/stress/stress.h>
 #include <vefs/transport/free_surface.h>
 #include <vefs/transport/initial_liquid.h>
+#include <vefs/transport/split_subtrees.h>
 #include <vefs/transport/subtree_partition.h>
 
 #include <cmath>
@@ -363,6 +364,13 @@ namespace vefs
                                                 fields,
                                                 surface->gradient(),
                                                 surface->history());
+    // Loaded on another number of ranks, p4est's partition counts cells and
+    // may cut a flow element.
+    mend_split_subtrees(triangulation,
+                        levels.subtree_level,
+                        fields,
+                        surface->gradient(),
+                        surface->history());
     surface->resume(state.initial_volume, state.expected_volume);
     last_output_step = state.last_output_step;
     wall_time_offset = state.statistics.wall_time;
