@@ -205,16 +205,12 @@ namespace vefs
             "Mesh refinement/Band placement",
             "'predicted' adapts the mesh before every advection; between "
             "remaps the mesh stays: it needs 'Transport/Remap distance = 0'");
-    require(
-      !mesh.band_in_one_change() ||
-        (transport.level_set_interpolation == LevelSetInterpolation::linear &&
-         transport.velocity_interpolation == VelocityInterpolation::linear &&
-         !transport.cubic_stress_interpolation()),
-      "Mesh refinement/Band placement",
-      "'predicted, one change' keeps the Q1 fields of the coarsened "
-      "cells only: it needs 'linear' for 'Level set interpolation', "
-      "'Velocity interpolation' and 'Stress interpolation' (in "
-      "'Transport')");
+    require(!mesh.band_in_one_change() || transport.feet_linear(),
+            "Mesh refinement/Band placement",
+            "'predicted, one change' keeps the Q1 fields of the coarsened "
+            "cells only: it needs 'linear' for 'Level set interpolation', "
+            "'Velocity interpolation' and 'Stress interpolation' (in "
+            "'Transport')");
     require(flow.flow_level_offset == 0 || cavity.periodic_directions().empty(),
             "Flow/Flow cells",
             "'parents' and 'grandparents' are not implemented with periodic "

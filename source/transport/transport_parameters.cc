@@ -150,14 +150,19 @@ namespace vefs
   }
 
   bool
+  TransportParameters::feet_linear() const
+  {
+    // An automatic stress interpolation follows the velocity's (resolve()).
+    return level_set_interpolation == LevelSetInterpolation::linear &&
+           velocity_interpolation == VelocityInterpolation::linear &&
+           stress_interpolation != StressInterpolation::limited_cubic;
+  }
+
+  bool
   TransportParameters::feet_linear_without_remap() const
   {
-    // An automatic stress interpolation follows the velocity's, and an
-    // automatic remap distance is 0 for a flow (resolve()).
-    return !velocity_is_prescribed() &&
-           level_set_interpolation == LevelSetInterpolation::linear &&
-           velocity_interpolation == VelocityInterpolation::linear &&
-           stress_interpolation != StressInterpolation::limited_cubic &&
+    // An automatic remap distance is 0 for a flow (resolve()).
+    return feet_linear() && !velocity_is_prescribed() &&
            (automatic_remap_distance || remap_distance == 0);
   }
 

@@ -57,14 +57,7 @@ main(int argc, char **argv)
         2>::mesh_reconstruction_after_repartitioning);
     GridGenerator::hyper_cube(triangulation, 0, 1);
     triangulation.refine_global(1);
-    for (unsigned int round = 0; round < 3; ++round)
-      {
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned() &&
-              std::abs(cell->center().norm() - 0.7) < 3 * cell->diameter())
-            cell->set_refine_flag();
-        triangulation.execute_coarsening_and_refinement();
-      }
+    unit_test::refine_toward_circle(triangulation);
 
     vefs::TransportedFields<2> fields(triangulation, true, false, {});
     fields.setup_dofs();

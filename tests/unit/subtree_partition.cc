@@ -57,14 +57,7 @@ namespace
       [](const typename Triangulation<dim>::cell_iterator &,
          const typename Triangulation<dim>::CellStatus) { return 1u; })
       .connect_to(triangulation);
-    for (unsigned int round = 0; round < 3; ++round)
-      {
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned() &&
-              std::abs(cell->center().norm() - 0.7) < 3 * cell->diameter())
-            cell->set_refine_flag();
-        triangulation.execute_coarsening_and_refinement();
-      }
+    unit_test::refine_toward_circle(triangulation);
     triangulation.repartition();
 
     unsigned int split_cells = 0;

@@ -121,6 +121,24 @@ namespace unit_test
     out << value;
     return out.str();
   }
+  /**
+   * Three rounds of refinement of the cells within three diameters of the
+   * circle (sphere) |x| = 0.7: on the unit square refined once, the level-1
+   * cells near it then hold subtrees of depth 2 and 3.
+   */
+  template <typename TriangulationType>
+  void
+  refine_toward_circle(TriangulationType &triangulation)
+  {
+    for (unsigned int round = 0; round < 3; ++round)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              std::abs(cell->center().norm() - 0.7) < 3 * cell->diameter())
+            cell->set_refine_flag();
+        triangulation.execute_coarsening_and_refinement();
+      }
+  }
 } // namespace unit_test
 
 #endif

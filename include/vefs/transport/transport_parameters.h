@@ -71,10 +71,17 @@ namespace vefs
     resolve(const bool band_predicted);
 
     /**
-     * Whether the feet read every field by linear interpolation and the
-     * surface is traced every step (remap distance 0), which 'Band
-     * placement = predicted, one change' needs; for a flow, before
-     * resolve() too.
+     * Whether the feet read every field by linear interpolation, which
+     * 'Band placement = predicted, one change' needs; before resolve() too
+     * (an automatic stress interpolation follows the velocity's).
+     */
+    bool
+    feet_linear() const;
+
+    /**
+     * feet_linear(), and a flow whose surface is traced every step (remap
+     * distance 0, automatic for a flow): where that placement may be
+     * chosen automatically.
      */
     bool
     feet_linear_without_remap() const;
