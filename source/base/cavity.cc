@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <limits>
 
 namespace vefs
 {
@@ -110,6 +111,18 @@ namespace vefs
                   "a 2D scene (Dimension = 2) has no z walls; remove the "
                   "entry");
         }
+  }
+
+  double
+  CavityParameters::cell_size(const unsigned int dimension,
+                              const unsigned int level) const
+  {
+    double size = std::numeric_limits<double>::max();
+    for (unsigned int d = 0; d < dimension; ++d)
+      size = std::min(size,
+                      (cavity_upper[d] - cavity_lower[d]) /
+                        coarse_subdivisions[d] / (1u << level));
+    return size;
   }
 
   std::vector<unsigned int>

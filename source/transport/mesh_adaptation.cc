@@ -153,12 +153,7 @@ namespace vefs
     , band_width(parameters.band_width)
     , band_predicted(parameters.band_predicted())
   {
-    finest_cell_size = std::numeric_limits<double>::max();
-    for (unsigned int d = 0; d < dimension; ++d)
-      finest_cell_size =
-        std::min(finest_cell_size,
-                 (cavity.cavity_upper[d] - cavity.cavity_lower[d]) /
-                   cavity.coarse_subdivisions[d] / (1u << max_level));
+    finest_cell_size = cavity.cell_size(dimension, max_level);
     expect_cfl(target_cfl);
   }
 

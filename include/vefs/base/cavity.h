@@ -55,6 +55,13 @@ namespace vefs
     std::vector<unsigned int>
     periodic_directions() const;
 
+    /**
+     * The shortest edge of a cell refined @p level times from the coarse
+     * cells (after check()).
+     */
+    double
+    cell_size(const unsigned int dimension, const unsigned int level) const;
+
     std::vector<double>       cavity_lower        = {0, 0};
     std::vector<double>       cavity_upper        = {0.28575, 0.142875};
     std::vector<unsigned int> coarse_subdivisions = {2, 1};
