@@ -1,6 +1,5 @@
 #include <vefs/base/expression_check.h>
 #include <vefs/base/parameter_entries.h>
-#include <vefs/core/health_check.h>
 #include <vefs/core/parameters.h>
 #include <vefs/core/resource_limits.h>
 
@@ -159,16 +158,7 @@ namespace vefs
     const bool steps_fixed =
       !time.strain_bound_shortens_step && time.target_cfl == 0;
     mesh.resolve(steps_fixed && transport.feet_linear_without_remap());
-    // Cubic interpolation at the feet keeps an elastic wave that the steps
-    // resolve; a wave crossing more cells per step than the trusted number
-    // needs linear interpolation's damping (doc/bouncing_ball.md, "Why the
-    // scene sets one numerical entry").
-    const bool resolved_elastic_waves =
-      regime == Regime::elastic_solid && !material.has_dumbbells() &&
-      elastic_wave_number() <= trusted_elastic_wave_number;
-    transport.resolve(mesh.band_predicted(),
-                      mesh.band_in_one_change(),
-                      resolved_elastic_waves);
+    transport.resolve(mesh.band_predicted());
     flow.resolve(regime, material.has_dumbbells());
     if (time.automatic_max_strain)
       time.max_strain_per_step = regime == Regime::elastic_solid ? 0.25 : 0;
@@ -180,25 +170,13 @@ namespace vefs
                         stress.stress_theta);
   }
 
-  double
-  Parameters::elastic_wave_number() const
-  {
-    if (material.regime() == Regime::newtonian)
-      return 0;
-    const double shear_modulus =
-      material.polymer_viscosity / material.relaxation_time;
-    return std::sqrt(shear_modulus / material.density) * time.time_step /
-           cavity.cell_size(dimension, mesh.max_level);
-  }
-
   void
   Parameters::check()
   {
     warnings.clear();
-    // The automatic entries read the finest cell size.
-    cavity.check(dimension);
     resolve_automatic_entries();
     time.check();
+    cavity.check(dimension);
     material.check(dimension);
     solver.check();
     postprocess.check(dimension, cavity);

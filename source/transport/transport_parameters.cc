@@ -38,7 +38,6 @@ namespace vefs
         "Velocity interpolation",
         velocity_interpolation,
         std::vector<std::pair<std::string, VelocityInterpolation>>{
-          {"automatic", VelocityInterpolation::automatic},
           {"linear", VelocityInterpolation::linear},
           {"cubic", VelocityInterpolation::cubic},
           {"limited cubic", VelocityInterpolation::limited_cubic}},
@@ -47,17 +46,11 @@ namespace vefs
         "varies within a few cells (its error acts as a viscosity of order "
         "h |u|); cubic (tensor-product cubic Hermite with nodal derivatives "
         "recovered from the Q1 field); limited cubic (cubic clipped to the "
-        "range of the cell's nodal values: no new extrema). automatic: "
-        "limited cubic for an elastic solid (alpha = 0, macroscopic stress) "
-        "whose shear wave crosses at most 10 finest cells in a 'Time/Time "
-        "step' (the statistics' elastic_wave_number): linear interpolation "
-        "damps its waves (the 2D stiff ball kept 91 % of its energy by "
-        "lift-off, 83 % with linear), and beyond 10 that damping is what "
-        "holds a stiff beam at rest (with limited cubic it gained energy "
-        "until the health check stopped it; doc/bouncing_ball.md); linear "
-        "for a liquid, for dumbbells (whose fields are carried linearly) "
-        "and with 'Mesh refinement/Band placement = predicted, one change', "
-        "which keeps Q1 fields only.");
+        "range of the cell's nodal values: no new extrema). Measured on the "
+        "2D stiff ball in doc/bouncing_ball.md: limited cubic keeps its "
+        "elastic wave's energy, but the 3D soft ball and beam stopped with "
+        "it (the Stokes solver not converging) and a clamped stiff beam at "
+        "rest gained energy: not a default.");
       add_selection(
         prm,
         "Stress interpolation",
@@ -143,14 +136,8 @@ namespace vefs
   }
 
   void
-  TransportParameters::resolve(const bool band_predicted,
-                               const bool band_in_one_change,
-                               const bool elastic_solid)
+  TransportParameters::resolve(const bool band_predicted)
   {
-    if (velocity_interpolation == VelocityInterpolation::automatic)
-      velocity_interpolation = elastic_solid && !band_in_one_change
-                                 ? VelocityInterpolation::limited_cubic
-                                 : VelocityInterpolation::linear;
     if (automatic_remap_distance)
       remap_distance = velocity_is_prescribed() &&
                            level_set_interpolation ==
@@ -168,10 +155,9 @@ namespace vefs
   bool
   TransportParameters::feet_linear() const
   {
-    // Automatic interpolations are linear with that placement (resolve()).
+    // An automatic stress interpolation follows the velocity's (resolve()).
     return level_set_interpolation == LevelSetInterpolation::linear &&
-           (velocity_interpolation == VelocityInterpolation::automatic ||
-            velocity_interpolation == VelocityInterpolation::linear) &&
+           velocity_interpolation == VelocityInterpolation::linear &&
            stress_interpolation != StressInterpolation::limited_cubic;
   }
 

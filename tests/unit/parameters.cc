@@ -10,8 +10,7 @@
 //  - Every moved entry set at its old place lands in its new member, with
 //    one warning naming both places; old and new place together are refused.
 //  - 'automatic' entries resolve by the material's regime or, for the
-//    stress interpolation, by the velocity interpolation; the velocity
-//    interpolation by the regime and the band placement; the remap
+//    stress interpolation, by the velocity interpolation; the remap
 //    distance by the level set interpolation, a prescribed velocity and
 //    the band placement; the band width and miss tolerance by the band
 //    placement; the band placement by the strain bound, the target CFL and
@@ -291,77 +290,6 @@ main()
         << '\n';
     out << "stress interpolation limited cubic, velocity linear: "
         << stress_interpolation("  set Stress interpolation = limited cubic\n")
-        << '\n';
-  }
-
-  {
-    // 'Velocity interpolation = automatic': limited cubic for an elastic
-    // solid with the macroscopic stress whose wave crosses at most 10
-    // finest cells per step, unless the band is placed in one change;
-    // linear otherwise. An explicit value stays.
-    const auto velocity_interpolation = [](const std::string &material,
-                                           const std::string &time,
-                                           const std::string &transport) {
-      write("velocity_interpolation.prm",
-            "set Dimension = 2\nsubsection Material\n" + material +
-              "end\nsubsection Time\n" + time + "end\nsubsection Transport\n" +
-              transport + "end\n");
-      vefs::Parameters parameters;
-      ParameterHandler prm;
-      parameters.declare(prm);
-      vefs::read_parameter_file(prm,
-                                "velocity_interpolation.prm",
-                                vefs::Parameters::moved_entries);
-      parameters.check();
-      const auto velocity = parameters.transport.velocity_interpolation;
-      return std::string(velocity == vefs::VelocityInterpolation::linear
-                           ? "linear"
-                         : velocity == vefs::VelocityInterpolation::cubic
-                           ? "cubic"
-                           : "limited cubic") +
-             ", stress " +
-             (parameters.transport.cubic_stress_interpolation()
-                ? "limited cubic"
-                : "linear");
-    };
-    const std::string elastic = "  set Alpha = 0\n"
-                                "  set Polymer viscosity = 10\n"
-                                "  set Relaxation time = 0.005\n";
-    out << "velocity interpolation automatic, elastic solid: "
-        << velocity_interpolation(elastic, "", "") << '\n';
-    out << "the same, strain bound local (band in one change): "
-        << velocity_interpolation(elastic, "  set Strain bound = local\n", "")
-        << '\n';
-    // c = (2000 / 1000)^(1/2) m/s, finest cells 0.142875 / 2^6 m (the
-    // defaults): a wave crosses 9.5 cells in 0.015 s, 10.5 in 0.0165 s.
-    for (const std::string step : {"0.015", "0.0165"})
-      out << "the same, Time step " << step << ": "
-          << velocity_interpolation(elastic,
-                                    "  set Time step = " + step + "\n",
-                                    "")
-          << '\n';
-    out << "the same, dumbbells: "
-        << velocity_interpolation(elastic + "  set Stress model = dumbbells\n",
-                                  "",
-                                  "")
-        << '\n';
-    out << "velocity interpolation automatic, Oldroyd-B liquid: "
-        << velocity_interpolation("  set Polymer viscosity = 10\n"
-                                  "  set Relaxation time = 0.005\n",
-                                  "",
-                                  "")
-        << '\n';
-    out << "velocity interpolation automatic, Newtonian liquid: "
-        << velocity_interpolation("", "", "") << '\n';
-    out << "velocity interpolation linear, elastic solid: "
-        << velocity_interpolation(elastic,
-                                  "",
-                                  "  set Velocity interpolation = linear\n")
-        << '\n';
-    out << "velocity interpolation cubic, Newtonian liquid: "
-        << velocity_interpolation("",
-                                  "",
-                                  "  set Velocity interpolation = cubic\n")
         << '\n';
   }
 

@@ -44,20 +44,12 @@ namespace vefs
     check();
 
     /**
-     * The entries set to 'automatic' given their value for the material,
-     * the steps and the interpolation at the feet (each entry's
-     * documentation says how). Called by check().
+     * The entries set to 'automatic' given their value for the material:
+     * 'Stress/Stress update' and 'Time/Maximum strain per step'. Called by
+     * check().
      */
     void
     resolve_automatic_entries();
-
-    /**
-     * c tau / h at 'Time/Time step' on the finest cells, c = (G / rho)^(1/2)
-     * the elastic shear wave speed (the statistics' elastic_wave_number); 0
-     * without a stress.
-     */
-    double
-    elastic_wave_number() const;
 
     /** What a run on @p n_ranks MPI ranks cannot do; throws InputError. */
     void
