@@ -16,7 +16,10 @@ dumbbells' runs of an earlier call and runs the macroscopic one only.
 Usage (from the repository root):
   /usr/bin/python3 benchmarks/dumbbells_dam.py [--vefs build/vefs]
       [--fields 400] [--seeds 1 2 3] [--estimator reduced|plain]
+      [--set 'Mesh refinement/Maximum level=7' ...]
       [--results-dir benchmarks/results/dumbbells_dam] [--no-run]
+--set changes an entry in every run (the macroscopic one too), e.g. the
+resolution.
 """
 
 import argparse
@@ -70,17 +73,19 @@ def main():
         ROOT, "benchmarks", "results", "dumbbells_dam"))
     parser.add_argument("--estimator", default="reduced",
                         choices=["reduced", "plain"])
+    parser.add_argument("--set", action="append", default=[],
+                        metavar="SECTION/ENTRY=VALUE")
     parser.add_argument("--no-run", action="store_true")
     parser.add_argument("--reuse-seeds", action="store_true")
     args = parser.parse_args()
     os.makedirs(args.results_dir, exist_ok=True)
 
-    macro = run(args.vefs, os.path.join(args.results_dir, "macroscopic"), [],
-                args.no_run)
+    macro = run(args.vefs, os.path.join(args.results_dir, "macroscopic"),
+                args.set, args.no_run)
     seeds = [run(args.vefs,
                  os.path.join(args.results_dir, "fields_%d_seed_%d_%s"
                               % (args.fields, seed, args.estimator)),
-                 ["Material/Stress model=dumbbells",
+                 args.set + ["Material/Stress model=dumbbells",
                   "Material/Dumbbell fields=%d" % args.fields,
                   "Material/Dumbbell seed=%d" % seed,
                   "Material/Dumbbell variance reduction=%s"
