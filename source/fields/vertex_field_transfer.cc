@@ -187,6 +187,42 @@ namespace vefs
       });
   }
 
+  template <int dim>
+  std::vector<typename TransportedFields<dim>::VectorType>
+  carry_through_mesh_change(
+    parallel::distributed::Triangulation<dim>                  &mesh,
+    TransportedFields<dim>                                     &fields,
+    const std::vector<typename VertexFieldTransfer<dim>::Slot> &slots,
+    const std::function<void()>                                &change,
+    typename VertexFieldTransfer<dim>::LatticeSource           *lattice_source)
+  {
+    std::vector<typename TransportedFields<dim>::VectorType> carried(
+      slots.size());
+    VertexFieldTransfer<dim> transfer(mesh, fields, slots, lattice_source);
+    change();
+    fields.setup_dofs();
+    std::vector<typename TransportedFields<dim>::VectorType *> targets;
+    for (auto &vector : carried)
+      {
+        fields.initialize_vector(vector);
+        targets.push_back(&vector);
+      }
+    transfer.unpack(fields, targets);
+    return carried;
+  }
+
   template class VertexFieldTransfer<2>;
   template class VertexFieldTransfer<3>;
+  template std::vector<TransportedFields<2>::VectorType>
+  carry_through_mesh_change(parallel::distributed::Triangulation<2> &,
+                            TransportedFields<2> &,
+                            const std::vector<VertexFieldTransfer<2>::Slot> &,
+                            const std::function<void()> &,
+                            VertexFieldTransfer<2>::LatticeSource *);
+  template std::vector<TransportedFields<3>::VectorType>
+  carry_through_mesh_change(parallel::distributed::Triangulation<3> &,
+                            TransportedFields<3> &,
+                            const std::vector<VertexFieldTransfer<3>::Slot> &,
+                            const std::function<void()> &,
+                            VertexFieldTransfer<3>::LatticeSource *);
 } // namespace vefs

@@ -449,20 +449,11 @@ namespace vefs
             lattice_source = coarsened_detail;
           }
         const auto move_fields = [&](const std::function<void()> &change) {
-          Transfer transfer(triangulation, fields, slots, lattice_source);
-          change();
-
-          fields.setup_dofs();
-          std::vector<typename TransportedFields<dim>::VectorType> transferred(
-            slots.size());
-          std::vector<typename TransportedFields<dim>::VectorType *>
-            new_vectors;
-          for (auto &vector : transferred)
-            {
-              fields.initialize_vector(vector);
-              new_vectors.push_back(&vector);
-            }
-          transfer.unpack(fields, new_vectors);
+          auto transferred = carry_through_mesh_change(triangulation,
+                                                       fields,
+                                                       slots,
+                                                       change,
+                                                       lattice_source);
           // swap(), not operator=: a vector whose owned range is the same
           // after the change would keep its old ghost layout.
           fields.swap(transferred[0]);

@@ -28,19 +28,10 @@ namespace vefs
       slots.push_back({vector, all_components});
     const auto scalars = history.scalars();
 
-    std::vector<VectorType> moved(slots.size());
-    {
-      Transfer transfer(triangulation, fields, slots);
-      triangulation.repartition();
-      fields.setup_dofs();
-      std::vector<VectorType *> targets;
-      for (VectorType &vector : moved)
-        {
-          fields.initialize_vector(vector);
-          targets.push_back(&vector);
-        }
-      transfer.unpack(fields, targets);
-    }
+    std::vector<VectorType> moved =
+      carry_through_mesh_change(triangulation, fields, slots, [&]() {
+        triangulation.repartition();
+      });
     fields.swap(moved[0]);
     fields.finalize();
     level_set_gradient.reinit(fields);

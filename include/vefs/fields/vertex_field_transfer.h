@@ -7,6 +7,7 @@
 #include <vefs/fields/family_lattice.h>
 #include <vefs/fields/transported_fields.h>
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -153,6 +154,22 @@ namespace vefs
     std::vector<std::pair<unsigned int, unsigned int>> lattice_components;
     unsigned int                                       lattice_handle = 0;
   };
+
+  /**
+   * The vectors of @p slots carried through @p change, a change of @p mesh
+   * (refinement, repartition): a VertexFieldTransfer around it and
+   * TransportedFields::setup_dofs() after it. One new vector per slot, in
+   * their order, laid out like the new fields; owned entries only (swap
+   * them in, then finalize).
+   */
+  template <int dim>
+  std::vector<typename TransportedFields<dim>::VectorType>
+  carry_through_mesh_change(
+    parallel::distributed::Triangulation<dim>                  &mesh,
+    TransportedFields<dim>                                     &fields,
+    const std::vector<typename VertexFieldTransfer<dim>::Slot> &slots,
+    const std::function<void()>                                &change,
+    typename VertexFieldTransfer<dim>::LatticeSource *lattice_source = nullptr);
 } // namespace vefs
 
 #endif
