@@ -87,9 +87,19 @@ namespace vefs
        * Q1 in the former child there.
        */
       const CoarsenedDetail<dim> *coarsened_detail = nullptr;
-      /** The velocity by this Hermite interpolation, if not null. */
-      const FieldHermite<dim> *velocity_hermite = nullptr;
-      bool                     velocity_limited = false;
+      /**
+       * The velocity by this Hermite interpolation, if not null, and with it
+       * the acceleration of the second-order scheme: the velocity slots hold
+       * u + tau/2 a while the feet are traced, and u(X) = (u + tau/2 a)(X) -
+       * tau/2 a(X) only if both are interpolated alike. With a Q1 a(X) the
+       * difference enters a = (u - u*) / (w tau) - ((1 - w) / w) a*, whose
+       * factor -(1 - w) / w = -0.96 it pushes beyond -1 for an alternating
+       * mode: the stiff beam at rest grew such a mode from t = 2.2 s
+       * (doc/bouncing_ball.md, "Why the scene sets two numerical entries").
+       */
+      const FieldHermite<dim>  *velocity_hermite = nullptr;
+      bool                      velocity_limited = false;
+      std::vector<unsigned int> velocity_components;
       /**
        * The stress by this limited Hermite interpolation, if not null, where
        * it keeps c = I + sigma / G (G = shear_modulus) positive definite.
@@ -137,12 +147,12 @@ namespace vefs
                   (*how.velocity_gradient)[j](dof_cell->vertex_dof_index(v, i));
           }
       if (how.velocity_hermite)
-        for (unsigned int d = 0; d < dim; ++d)
-          values[d] =
+        for (const unsigned int c : how.velocity_components)
+          values[c] =
             how.velocity_hermite->component_value(fields,
                                                   dof_cell,
                                                   xi,
-                                                  d,
+                                                  c,
                                                   how.velocity_limited);
       if (how.stress_hermite)
         {
@@ -488,7 +498,12 @@ namespace vefs
     if (interpolation.velocity != VelocityInterpolation::linear)
       {
         for (unsigned int d = 0; d < dim; ++d)
-          cubic_components.push_back(d);
+          how.velocity_components.push_back(d);
+        if (fields.has_acceleration())
+          for (unsigned int d = 0; d < dim; ++d)
+            how.velocity_components.push_back(
+              fields.first_acceleration_component + d);
+        cubic_components     = how.velocity_components;
         how.velocity_hermite = &hermite;
         how.velocity_limited =
           interpolation.velocity == VelocityInterpolation::limited_cubic;

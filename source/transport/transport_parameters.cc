@@ -46,11 +46,13 @@ namespace vefs
         "varies within a few cells (its error acts as a viscosity of order "
         "h |u|); cubic (tensor-product cubic Hermite with nodal derivatives "
         "recovered from the Q1 field); limited cubic (cubic clipped to the "
-        "range of the cell's nodal values: no new extrema). Measured on the "
+        "range of the cell's nodal values: no new extrema). The second-order "
+        "scheme's acceleration is interpolated the same way. Measured on the "
         "2D stiff ball in doc/bouncing_ball.md: limited cubic keeps its "
-        "elastic wave's energy, but the 3D soft ball and beam stopped with "
-        "it (the Stokes solver not converging) and a clamped stiff beam at "
-        "rest gained energy: not a default.");
+        "elastic wave's energy, but the 3D soft ball stopped with it (the "
+        "Stokes solver not converging), the 3D beam's solves need three "
+        "times the default 'Solver/Maximum iterations', and the 2D soft ball "
+        "takes 1.8 times the steps: not a default.");
       add_selection(
         prm,
         "Stress interpolation",
