@@ -158,8 +158,6 @@ namespace vefs
     const bool steps_fixed =
       !time.strain_bound_shortens_step && time.target_cfl == 0;
     mesh.resolve(steps_fixed && transport.feet_linear_without_remap());
-    transport.resolve(mesh.band_predicted());
-    flow.resolve(regime, material.has_dumbbells());
     if (time.automatic_max_strain)
       time.max_strain_per_step = regime == Regime::elastic_solid ? 0.25 : 0;
     // The second-order scheme's relaxation has no dumbbell counterpart
@@ -168,15 +166,43 @@ namespace vefs
                           !transport.velocity_is_prescribed() &&
                           !(material.has_dumbbells() && material.alpha != 0),
                         stress.stress_theta);
+    // Cubic interpolation at the feet keeps the elastic waves of a solid
+    // that holds its shape under its weight; a soft one pays for it in steps
+    // and solves (doc/bouncing_ball.md, "The interpolation at the feet").
+    const bool stiff_solid_under_gravity =
+      regime == Regime::elastic_solid && !material.has_dumbbells() &&
+      time.second_order && weight_strain() > 0 && weight_strain() < 1;
+    transport.resolve(mesh.band_predicted(),
+                      mesh.band_in_one_change(),
+                      stiff_solid_under_gravity);
+    flow.resolve(regime, material.has_dumbbells());
+  }
+
+  double
+  Parameters::weight_strain() const
+  {
+    if (material.regime() == Regime::newtonian)
+      return 0;
+    const double shear_modulus =
+      material.polymer_viscosity / material.relaxation_time;
+    double g = 0, extent = 0;
+    for (unsigned int d = 0; d < material.gravity.size(); ++d)
+      g += material.gravity[d] * material.gravity[d];
+    for (unsigned int d = 0; d < cavity.cavity_lower.size(); ++d)
+      extent =
+        std::max(extent,
+                 std::abs(cavity.cavity_upper[d] - cavity.cavity_lower[d]));
+    return material.density * std::sqrt(g) * extent / (3 * shear_modulus);
   }
 
   void
   Parameters::check()
   {
     warnings.clear();
+    // The automatic entries read the finest cell size.
+    cavity.check(dimension);
     resolve_automatic_entries();
     time.check();
-    cavity.check(dimension);
     material.check(dimension);
     solver.check();
     postprocess.check(dimension, cavity);

@@ -10,7 +10,8 @@
 //  - Every moved entry set at its old place lands in its new member, with
 //    one warning naming both places; old and new place together are refused.
 //  - 'automatic' entries resolve by the material's regime or, for the
-//    stress interpolation, by the velocity interpolation; the remap
+//    stress interpolation, by the velocity interpolation; the velocity
+//    interpolation by the regime and the band placement; the remap
 //    distance by the level set interpolation, a prescribed velocity and
 //    the band placement; the band width and miss tolerance by the band
 //    placement; the band placement by the strain bound, the target CFL and
@@ -290,6 +291,99 @@ main()
         << '\n';
     out << "stress interpolation limited cubic, velocity linear: "
         << stress_interpolation("  set Stress interpolation = limited cubic\n")
+        << '\n';
+  }
+
+  {
+    // 'Velocity interpolation = automatic': limited cubic for an elastic
+    // solid with the macroscopic stress, the second-order scheme and a
+    // weight strain rho |g| L / (3 G) in (0, 1), L the cavity's largest
+    // extent, unless the band is placed in one change; linear otherwise.
+    // An explicit value stays.
+    const auto velocity_interpolation = [](const std::string &top,
+                                           const std::string &material,
+                                           const std::string &time,
+                                           const std::string &transport) {
+      write("velocity_interpolation.prm",
+            "set Dimension = 2\n" + top + "subsection Material\n" + material +
+              "end\nsubsection Time\n" + time + "end\nsubsection Transport\n" +
+              transport + "end\n");
+      vefs::Parameters parameters;
+      ParameterHandler prm;
+      parameters.declare(prm);
+      vefs::read_parameter_file(prm,
+                                "velocity_interpolation.prm",
+                                vefs::Parameters::moved_entries);
+      parameters.check();
+      const auto velocity = parameters.transport.velocity_interpolation;
+      return std::string(velocity == vefs::VelocityInterpolation::linear
+                           ? "linear"
+                         : velocity == vefs::VelocityInterpolation::cubic
+                           ? "cubic"
+                           : "limited cubic") +
+             ", stress " +
+             (parameters.transport.cubic_stress_interpolation()
+                ? "limited cubic"
+                : "linear");
+    };
+    // G = eta_p / lambda; with the defaults rho = 1000, g = 9.81 and the
+    // cavity 0.28575 m wide the weight strain is 0.467 at G = 2000 Pa,
+    // 0.950 at eta_p = 4.92 and 1.050 at 4.45 Pa s, 46.7 at 20 Pa.
+    const auto elastic = [](const std::string &polymer_viscosity) {
+      return "  set Alpha = 0\n  set Polymer viscosity = " + polymer_viscosity +
+             "\n  set Relaxation time = 0.005\n";
+    };
+    out << "velocity interpolation automatic, elastic solid, weight strain "
+           "0.467: "
+        << velocity_interpolation("", elastic("10"), "", "") << '\n';
+    out << "the same, weight strain 0.950: "
+        << velocity_interpolation("", elastic("4.92"), "", "") << '\n';
+    out << "the same, weight strain 1.050: "
+        << velocity_interpolation("", elastic("4.45"), "", "") << '\n';
+    out << "the same, weight strain 46.7: "
+        << velocity_interpolation("", elastic("0.1"), "", "") << '\n';
+    out << "the same (0.467), no gravity: "
+        << velocity_interpolation("set Gravity = 0, 0\n", elastic("10"), "", "")
+        << '\n';
+    out << "the same (0.467), first-order scheme: "
+        << velocity_interpolation("",
+                                  elastic("10"),
+                                  "  set Scheme = first order\n",
+                                  "")
+        << '\n';
+    out << "the same (0.467), strain bound local (band in one change): "
+        << velocity_interpolation("",
+                                  elastic("10"),
+                                  "  set Strain bound = local\n",
+                                  "")
+        << '\n';
+    out << "the same (0.467), dumbbells: "
+        << velocity_interpolation("",
+                                  elastic("10") +
+                                    "  set Stress model = dumbbells\n",
+                                  "",
+                                  "")
+        << '\n';
+    out << "velocity interpolation automatic, Oldroyd-B liquid: "
+        << velocity_interpolation("",
+                                  "  set Polymer viscosity = 10\n"
+                                  "  set Relaxation time = 0.005\n",
+                                  "",
+                                  "")
+        << '\n';
+    out << "velocity interpolation automatic, Newtonian liquid: "
+        << velocity_interpolation("", "", "", "") << '\n';
+    out << "velocity interpolation linear, elastic solid (0.467): "
+        << velocity_interpolation("",
+                                  elastic("10"),
+                                  "",
+                                  "  set Velocity interpolation = linear\n")
+        << '\n';
+    out << "velocity interpolation cubic, Newtonian liquid: "
+        << velocity_interpolation("",
+                                  "",
+                                  "",
+                                  "  set Velocity interpolation = cubic\n")
         << '\n';
   }
 

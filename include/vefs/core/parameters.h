@@ -44,12 +44,20 @@ namespace vefs
     check();
 
     /**
-     * The entries set to 'automatic' given their value for the material:
-     * 'Stress/Stress update' and 'Time/Maximum strain per step'. Called by
-     * check().
+     * The entries set to 'automatic' given their value for the material,
+     * the steps and the interpolation at the feet (each entry's
+     * documentation says how). Called by check().
      */
     void
     resolve_automatic_entries();
+
+    /**
+     * rho |g| L / (3 G), L the cavity's largest extent: the strain its
+     * weight would give a column of the solid as tall as the cavity (E = 3
+     * G, incompressible); 0 without a stress.
+     */
+    double
+    weight_strain() const;
 
     /** What a run on @p n_ranks MPI ranks cannot do; throws InputError. */
     void

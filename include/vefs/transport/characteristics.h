@@ -36,6 +36,8 @@ namespace vefs
       , cubic_stress(parameters.cubic_stress_interpolation() && has_stress)
       , shear_modulus(cubic_stress ? shear_modulus : 1.)
     {
+      Assert(velocity != VelocityInterpolation::automatic,
+             dealii::ExcMessage("TransportParameters::resolve() first."));
     }
   };
 

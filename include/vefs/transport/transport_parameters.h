@@ -19,6 +19,8 @@ namespace vefs
   /** How the velocity is interpolated at the feet of the characteristics. */
   enum class VelocityInterpolation
   {
+    /** By the regime and the band placement: TransportParameters::resolve(). */
+    automatic,
     linear,
     cubic,
     limited_cubic
@@ -47,7 +49,7 @@ namespace vefs
     LevelSetInterpolation level_set_interpolation =
       LevelSetInterpolation::linear;
     VelocityInterpolation velocity_interpolation =
-      VelocityInterpolation::linear;
+      VelocityInterpolation::automatic;
     StressInterpolation stress_interpolation = StressInterpolation::automatic;
     /** Finest cells the surface moves between remaps; 0: every step. */
     double       remap_distance           = 0;
@@ -59,21 +61,28 @@ namespace vefs
     std::string exact_final_level_set = "";
 
     /**
-     * 'automatic' stress interpolation becomes limited cubic where the
-     * velocity is interpolated by (limited) cubic, linear otherwise: an
-     * elastic wave carries its energy in both fields (doc/bouncing_ball.md).
+     * 'automatic' velocity interpolation becomes limited cubic for an
+     * elastic solid (@p elastic_solid: macroscopic stress, alpha = 0) unless
+     * @p band_in_one_change (that placement keeps Q1 fields only), linear
+     * otherwise: linear interpolation damps an elastic wave
+     * (doc/bouncing_ball.md). 'automatic' stress interpolation then becomes
+     * limited cubic where the velocity is interpolated by (limited) cubic,
+     * linear otherwise: an elastic wave carries its energy in both fields.
      * An 'automatic' remap distance becomes 10 for the gradient augmented
      * level set carried by a prescribed velocity (unless @p band_predicted:
      * that placement adapts the mesh at every step), 0 otherwise
      * (doc/transport.md).
      */
     void
-    resolve(const bool band_predicted);
+    resolve(const bool band_predicted,
+            const bool band_in_one_change,
+            const bool elastic_solid);
 
     /**
      * Whether the feet read every field by linear interpolation, which
      * 'Band placement = predicted, one change' needs; before resolve() too
-     * (an automatic stress interpolation follows the velocity's).
+     * (an automatic velocity interpolation is then linear, and an automatic
+     * stress interpolation follows the velocity's).
      */
     bool
     feet_linear() const;
