@@ -199,7 +199,7 @@ namespace vefs
   Parameters::check()
   {
     warnings.clear();
-    // The automatic entries read the finest cell size.
+    // The automatic entries read the cavity's extent.
     cavity.check(dimension);
     resolve_automatic_entries();
     time.check();

@@ -149,10 +149,10 @@ namespace vefs
   void
   TransportParameters::resolve(const bool band_predicted,
                                const bool band_in_one_change,
-                               const bool elastic_solid)
+                               const bool stiff_solid)
   {
     if (velocity_interpolation == VelocityInterpolation::automatic)
-      velocity_interpolation = elastic_solid && !band_in_one_change
+      velocity_interpolation = stiff_solid && !band_in_one_change
                                  ? VelocityInterpolation::limited_cubic
                                  : VelocityInterpolation::linear;
     if (automatic_remap_distance)

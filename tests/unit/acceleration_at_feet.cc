@@ -29,16 +29,6 @@ using namespace dealii;
 
 namespace
 {
-  template <int dim>
-  Point<dim>
-  filled(const double value)
-  {
-    Point<dim> p;
-    for (unsigned int d = 0; d < dim; ++d)
-      p[d] = value;
-    return p;
-  }
-
   /** The level set and the acceleration components after one step. */
   template <int dim>
   struct Advected
@@ -107,22 +97,13 @@ namespace
     const MPI_Comm                            comm = MPI_COMM_WORLD;
     parallel::distributed::Triangulation<dim> triangulation(comm);
     const std::vector<unsigned int>           subdivisions(dim, 2);
-    GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                              subdivisions,
-                                              filled<dim>(-1),
-                                              filled<dim>(1),
-                                              true);
-    triangulation.refine_global(dim == 2 ? 3 : 2);
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->center()[0] > 0.1 &&
-          cell->center()[1] > -0.3)
-        cell->set_refine_flag();
-    triangulation.execute_coarsening_and_refinement();
+    unit_test::make_box_with_finer_patch(triangulation);
     std::array<vefs::WallType, 6> walls;
     walls.fill(vefs::WallType::no_slip);
     const vefs::BoxMeshLocator<dim> locator(
       triangulation,
-      BoundingBox<dim>(std::make_pair(filled<dim>(-1), filled<dim>(1))),
+      BoundingBox<dim>(
+        std::make_pair(unit_test::filled<dim>(-1), unit_test::filled<dim>(1))),
       subdivisions,
       walls);
 

@@ -34,16 +34,6 @@ using namespace dealii;
 
 namespace
 {
-  template <int dim>
-  Point<dim>
-  filled(const double value)
-  {
-    Point<dim> p;
-    for (unsigned int d = 0; d < dim; ++d)
-      p[d] = value;
-    return p;
-  }
-
   /** u = A (x - c). */
   template <int dim>
   class Rotation : public Function<dim>
@@ -89,7 +79,7 @@ namespace
     const MPI_Comm   comm  = MPI_COMM_WORLD;
     const double     omega = 2, tau = 0.1, theta = omega * tau;
     const double     radius = 0.8;
-    const Point<dim> center = filled<dim>(0.05);
+    const Point<dim> center = unit_test::filled<dim>(0.05);
     // The generator of the rotation about a tilted axis (the z axis in 2D).
     Tensor<2, dim> A;
     if constexpr (dim == 2)
@@ -114,20 +104,9 @@ namespace
 
     parallel::distributed::Triangulation<dim> triangulation(comm);
     const std::vector<unsigned int>           subdivisions(dim, 2);
-    GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                              subdivisions,
-                                              filled<dim>(-1),
-                                              filled<dim>(1),
-                                              true);
-    triangulation.refine_global(dim == 2 ? 3 : 2);
-    // A finer patch, so that paths cross hanging nodes.
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->center()[0] > 0.1 &&
-          cell->center()[1] > -0.3)
-        cell->set_refine_flag();
-    triangulation.execute_coarsening_and_refinement();
+    unit_test::make_box_with_finer_patch(triangulation);
     const BoundingBox<dim> cavity(
-      std::make_pair(filled<dim>(-1), filled<dim>(1)));
+      std::make_pair(unit_test::filled<dim>(-1), unit_test::filled<dim>(1)));
     std::array<vefs::WallType, 6> walls;
     walls.fill(vefs::WallType::no_slip);
     const vefs::BoxMeshLocator<dim> locator(triangulation,

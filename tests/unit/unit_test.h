@@ -9,6 +9,8 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/grid/grid_generator.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -112,6 +114,41 @@ namespace unit_test
   private:
     const double shift;
   };
+
+  /** The point (value, ..., value). */
+  template <int dim>
+  dealii::Point<dim>
+  filled(const double value)
+  {
+    dealii::Point<dim> p;
+    for (unsigned int d = 0; d < dim; ++d)
+      p[d] = value;
+    return p;
+  }
+
+  /**
+   * [-1, 1]^dim from 2^dim coarse cells refined 3 times (2D) or twice (3D),
+   * and the cells with x > 0.1 and y > -0.3 once more: paths across it
+   * cross hanging nodes (and, on 2 ranks, the partition).
+   */
+  template <int dim>
+  void
+  make_box_with_finer_patch(
+    dealii::parallel::distributed::Triangulation<dim> &triangulation)
+  {
+    dealii::GridGenerator::subdivided_hyper_rectangle(
+      triangulation,
+      std::vector<unsigned int>(dim, 2),
+      filled<dim>(-1),
+      filled<dim>(1),
+      true);
+    triangulation.refine_global(dim == 2 ? 3 : 2);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->center()[0] > 0.1 &&
+          cell->center()[1] > -0.3)
+        cell->set_refine_flag();
+    triangulation.execute_coarsening_and_refinement();
+  }
 
   /** @p value with few digits, for labels. */
   inline std::string

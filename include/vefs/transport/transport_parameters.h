@@ -61,22 +61,23 @@ namespace vefs
     std::string exact_final_level_set = "";
 
     /**
-     * 'automatic' velocity interpolation becomes limited cubic for an
-     * elastic solid (@p elastic_solid: macroscopic stress, alpha = 0) unless
-     * @p band_in_one_change (that placement keeps Q1 fields only), linear
-     * otherwise: linear interpolation damps an elastic wave
-     * (doc/bouncing_ball.md). 'automatic' stress interpolation then becomes
-     * limited cubic where the velocity is interpolated by (limited) cubic,
-     * linear otherwise: an elastic wave carries its energy in both fields.
-     * An 'automatic' remap distance becomes 10 for the gradient augmented
-     * level set carried by a prescribed velocity (unless @p band_predicted:
-     * that placement adapts the mesh at every step), 0 otherwise
-     * (doc/transport.md).
+     * 'automatic' velocity interpolation becomes limited cubic for a stiff
+     * elastic solid under gravity (@p stiff_solid: the rule of
+     * Parameters::resolve_automatic_entries()) unless @p band_in_one_change
+     * (that placement keeps Q1 fields only), linear otherwise: linear
+     * interpolation damps an elastic wave (doc/bouncing_ball.md, "The
+     * interpolation at the feet"). 'automatic' stress interpolation then
+     * becomes limited cubic where the velocity is interpolated by (limited)
+     * cubic, linear otherwise: an elastic wave carries its energy in both
+     * fields. An 'automatic' remap distance becomes 10 for the gradient
+     * augmented level set carried by a prescribed velocity (unless @p
+     * band_predicted: that placement adapts the mesh at every step), 0
+     * otherwise (doc/transport.md).
      */
     void
     resolve(const bool band_predicted,
             const bool band_in_one_change,
-            const bool elastic_solid);
+            const bool stiff_solid);
 
     /**
      * Whether the feet read every field by linear interpolation, which
