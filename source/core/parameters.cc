@@ -169,9 +169,10 @@ namespace vefs
     // Cubic interpolation at the feet keeps the elastic waves of a solid
     // that holds its shape under its weight; a soft one pays for it in steps
     // and solves (doc/bouncing_ball.md, "The interpolation at the feet").
-    const bool stiff_solid_under_gravity =
+    const double strain = weight_strain();
+    const bool   stiff_solid_under_gravity =
       regime == Regime::elastic_solid && !material.has_dumbbells() &&
-      time.second_order && weight_strain() > 0 && weight_strain() < 1;
+      time.second_order && strain > 0 && strain < 1;
     transport.resolve(mesh.band_predicted(),
                       mesh.band_in_one_change(),
                       stiff_solid_under_gravity);
@@ -183,8 +184,6 @@ namespace vefs
   {
     if (material.regime() == Regime::newtonian)
       return 0;
-    const double shear_modulus =
-      material.polymer_viscosity / material.relaxation_time;
     double g = 0, extent = 0;
     for (unsigned int d = 0; d < material.gravity.size(); ++d)
       g += material.gravity[d] * material.gravity[d];
@@ -192,7 +191,8 @@ namespace vefs
       extent =
         std::max(extent,
                  std::abs(cavity.cavity_upper[d] - cavity.cavity_lower[d]));
-    return material.density * std::sqrt(g) * extent / (3 * shear_modulus);
+    return material.density * std::sqrt(g) * extent /
+           (3 * material.shear_modulus());
   }
 
   void

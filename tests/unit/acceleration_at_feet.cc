@@ -17,7 +17,6 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
-#include <deal.II/grid/grid_generator.h>
 
 #include <vefs/compat/box_mesh_locator.h>
 #include <vefs/transport/characteristics.h>
@@ -96,8 +95,8 @@ namespace
   {
     const MPI_Comm                            comm = MPI_COMM_WORLD;
     parallel::distributed::Triangulation<dim> triangulation(comm);
-    const std::vector<unsigned int>           subdivisions(dim, 2);
-    unit_test::make_box_with_finer_patch(triangulation);
+    const std::vector<unsigned int>           subdivisions =
+      unit_test::make_box_with_finer_patch(triangulation);
     std::array<vefs::WallType, 6> walls;
     walls.fill(vefs::WallType::no_slip);
     const vefs::BoxMeshLocator<dim> locator(

@@ -21,7 +21,6 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
-#include <deal.II/grid/grid_generator.h>
 
 #include <vefs/compat/box_mesh_locator.h>
 #include <vefs/stress/tensor_exponential.h>
@@ -103,8 +102,8 @@ namespace
       }
 
     parallel::distributed::Triangulation<dim> triangulation(comm);
-    const std::vector<unsigned int>           subdivisions(dim, 2);
-    unit_test::make_box_with_finer_patch(triangulation);
+    const std::vector<unsigned int>           subdivisions =
+      unit_test::make_box_with_finer_patch(triangulation);
     const BoundingBox<dim> cavity(
       std::make_pair(unit_test::filled<dim>(-1), unit_test::filled<dim>(1)));
     std::array<vefs::WallType, 6> walls;

@@ -129,25 +129,27 @@ namespace unit_test
   /**
    * [-1, 1]^dim from 2^dim coarse cells refined 3 times (2D) or twice (3D),
    * and the cells with x > 0.1 and y > -0.3 once more: paths across it
-   * cross hanging nodes (and, on 2 ranks, the partition).
+   * cross hanging nodes (and, on 2 ranks, the partition). Returns the coarse
+   * subdivisions (for a BoxMeshLocator).
    */
   template <int dim>
-  void
+  std::vector<unsigned int>
   make_box_with_finer_patch(
     dealii::parallel::distributed::Triangulation<dim> &triangulation)
   {
-    dealii::GridGenerator::subdivided_hyper_rectangle(
-      triangulation,
-      std::vector<unsigned int>(dim, 2),
-      filled<dim>(-1),
-      filled<dim>(1),
-      true);
+    const std::vector<unsigned int> subdivisions(dim, 2);
+    dealii::GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                      subdivisions,
+                                                      filled<dim>(-1),
+                                                      filled<dim>(1),
+                                                      true);
     triangulation.refine_global(dim == 2 ? 3 : 2);
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() && cell->center()[0] > 0.1 &&
           cell->center()[1] > -0.3)
         cell->set_refine_flag();
     triangulation.execute_coarsening_and_refinement();
+    return subdivisions;
   }
 
   /** @p value with few digits, for labels. */

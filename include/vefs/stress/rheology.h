@@ -81,6 +81,13 @@ namespace vefs
       return stress_model == StressModel::dumbbells;
     }
 
+    /** G = eta_p / lambda, with a stress (not the Newtonian regime). */
+    double
+    shear_modulus() const
+    {
+      return polymer_viscosity / relaxation_time;
+    }
+
     double              density           = 1000;
     double              solvent_viscosity = 0.001;
     double              polymer_viscosity = 0;
