@@ -216,11 +216,11 @@ namespace vefs
     statistics.linear_iterations = 0;
     if (parameters.material.has_dumbbells())
       {
-        // The advection and the mesh change carried the fields q_i and the
-        // stress apart: the flow step (and the energy budget) sees the fields'
-        // stress.
+        // The advection and the mesh change interpolated the fields q_i and
+        // the stress apart; the stress, interpolated like the macroscopic
+        // run's, is the one to keep (doc/dumbbells.md, "Interpolation").
         TimerOutput::Scope scope(timer, "4 stress update");
-        set_ensemble_stress(fields, rheology);
+        match_dumbbells_to_stress(fields, rheology);
       }
     if (parameters.energy_budget)
       {
@@ -386,7 +386,7 @@ namespace vefs
       }
     if (parameters.material.has_dumbbells())
       // The extension averaged the fields q_i and the stress apart.
-      set_ensemble_stress(fields, rheology);
+      match_dumbbells_to_stress(fields, rheology);
   }
 
   template <int dim>

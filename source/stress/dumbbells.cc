@@ -152,6 +152,37 @@ namespace vefs
 
   template <int dim>
   void
+  match_dumbbells_to_stress(TransportedFields<dim> &fields,
+                            const Rheology<dim>    &rheology)
+  {
+    const SymmetricTensor<2, dim> control_offset =
+      control_moment(fields) - unit_symmetric_tensor<dim>();
+    for (const auto &node : fields.nodes())
+      {
+        const auto                    q = node_fields(fields, node);
+        const SymmetricTensor<2, dim> target =
+          rheology.conformation(fields.stress(node)) + control_offset;
+        Tensor<2, dim> T;
+        try
+          {
+            T = dumbbells::moment_map<dim>(dumbbells::second_moment(q),
+                                           target,
+                                           Tensor<2, dim>(
+                                             unit_symmetric_tensor<dim>()));
+          }
+        catch (const ExceptionBase &)
+          {
+            continue;
+          }
+        for (unsigned int i = 0; i < q.size(); ++i)
+          fields.set_dumbbell(node, i, T * q[i]);
+      }
+    fields.finalize();
+    set_ensemble_stress(fields, rheology);
+  }
+
+  template <int dim>
+  void
   set_initial_dumbbells(TransportedFields<dim> &fields,
                         const Rheology<dim>    &rheology,
                         const unsigned int      seed,
@@ -287,6 +318,8 @@ namespace vefs
   }
 
 #define VEFS_INSTANTIATE(dim)                                              \
+  template void match_dumbbells_to_stress<dim>(TransportedFields<dim> &,   \
+                                               const Rheology<dim> &);     \
   template SymmetricTensor<2, dim> dumbbells::second_moment<dim>(          \
     const std::vector<Tensor<1, dim>> &);                                  \
   template Tensor<2, dim> dumbbells::cholesky_factor<dim>(                 \

@@ -20,6 +20,14 @@
 //   estimator G (<q q^T> - I) has the noise of N_f = 50 fields (above
 //   0.01 G); the equilibrium fields follow p_i = sqrt(k) p_i + sqrt(1 - k)
 //   xi_i exactly. 1 and 2 ranks.
+// - match_dumbbells_to_stress(): fields drawn for a stress sigma_0, then a
+//   stress sigma(x) that differs from node to node (as an interpolation
+//   leaves it): afterwards <q q^T> = c(sigma(x)) + <p p^T> - I at every
+//   node and the stress is still sigma(x), with and without variance
+//   reduction; called again, it leaves the fields as they are (the map
+//   nearest to the identity is the identity); a node whose sigma has a
+//   conformation that is not positive definite keeps its fields and takes
+//   their ensemble stress. 1 and 2 ranks.
 // Tolerance: relative error below 1e-12 (round-off of a few tens of
 // operations), unless stated.
 
@@ -343,6 +351,122 @@ namespace
                            control_error,
                            1e-12);
   }
+  void
+  check_match_to_stress(std::ostream &out)
+  {
+    const unsigned int                      n_fields = 20, seed = 7;
+    parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
+    GridGenerator::hyper_cube(triangulation, 0, 1, true);
+    triangulation.refine_global(3);
+
+    vefs::MaterialParameters material;
+    material.polymer_viscosity = 2;
+    material.relaxation_time   = 0.5;
+    material.alpha             = 1;
+    material.stress_model      = vefs::StressModel::dumbbells;
+    vefs::StressParameters stress;
+    stress.stress_update = vefs::StressUpdate::exponential;
+    const vefs::Rheology<2> liquid(material, stress, 0);
+    const double            G = liquid.shear_modulus();
+
+    SymmetricTensor<2, 2> sigma_0;
+    sigma_0[0][0] = 0.7 * G;
+    sigma_0[0][1] = -0.4 * G;
+    sigma_0[1][1] = 0.2 * G;
+    Vector<double> stress_values(3);
+    for (unsigned int i = 0; i < 3; ++i)
+      stress_values[i] = sigma_0.access_raw_entry(i);
+    const Functions::ConstantFunction<2>      initial_stress(stress_values);
+    const ScalarFunctionFromFunctionObject<2> everywhere_liquid(
+      [](const Point<2> &) { return -1.; });
+    // What an interpolation might leave: sigma_0 scaled and sheared by
+    // position; at x = y = 1 a conformation that is not positive definite.
+    const auto interpolated = [&](const Point<2> &p) {
+      if (p.distance(Point<2>(1, 1)) < 1e-12)
+        return SymmetricTensor<2, 2>(-2 * G * unit_symmetric_tensor<2>());
+      SymmetricTensor<2, 2> sigma = (1 + 0.5 * std::sin(3 * p[0])) * sigma_0;
+      sigma[0][1] += 0.3 * G * p[1];
+      return sigma;
+    };
+
+    for (const bool reduced : {false, true})
+      {
+        const std::string name =
+          reduced ? "variance reduced, " : "plain estimator, ";
+        vefs::TransportedFields<2> fields(triangulation,
+                                          true,
+                                          false,
+                                          {},
+                                          n_fields);
+        fields.setup_dofs();
+        fields.interpolate(everywhere_liquid,
+                           Functions::ZeroFunction<2>(2),
+                           &initial_stress);
+        vefs::set_initial_dumbbells(fields, liquid, seed, reduced);
+        for (const auto &node : fields.nodes())
+          fields.set_stress(node, interpolated(node.point));
+        fields.finalize();
+
+        vefs::match_dumbbells_to_stress(fields, liquid);
+        const SymmetricTensor<2, 2> offset =
+          vefs::control_moment(fields) - unit_symmetric_tensor<2>();
+        double moment_error = 0, stress_error = 0, kept_error = 0;
+        std::vector<std::vector<Tensor<1, 2>>> matched;
+        for (const auto &node : fields.nodes())
+          {
+            matched.emplace_back();
+            std::vector<Tensor<1, 2>> q(n_fields);
+            for (unsigned int i = 0; i < n_fields; ++i)
+              matched.back().push_back(q[i] = fields.dumbbell(node, i));
+            const SymmetricTensor<2, 2> sigma = interpolated(node.point);
+            if (node.point.distance(Point<2>(1, 1)) < 1e-12)
+              kept_error = std::max(kept_error,
+                                    (fields.stress(node) -
+                                     G * (db::second_moment(q) -
+                                          vefs::control_moment(fields)))
+                                      .norm());
+            else
+              {
+                const SymmetricTensor<2, 2> target =
+                  liquid.conformation(sigma) + offset;
+                moment_error = std::max(moment_error,
+                                        (db::second_moment(q) - target).norm() /
+                                          target.norm());
+                stress_error =
+                  std::max(stress_error,
+                           (fields.stress(node) - sigma).norm() / sigma.norm());
+              }
+          }
+        const MPI_Comm comm = MPI_COMM_WORLD;
+        unit_test::check_below(out,
+                               name +
+                                 "matched, |<q q^T> - c - <p p^T> + I| / |.|",
+                               Utilities::MPI::max(moment_error, comm),
+                               1e-12);
+        unit_test::check_below(out,
+                               name + "matched, |stress - sigma| / |sigma|",
+                               Utilities::MPI::max(stress_error, comm),
+                               1e-12);
+        unit_test::check_below(
+          out,
+          name + "not positive definite, |stress - G (<q q^T> - <p p^T>)| / G",
+          Utilities::MPI::max(kept_error, comm) / G,
+          1e-12);
+
+        vefs::match_dumbbells_to_stress(fields, liquid);
+        double change = 0;
+        for (unsigned int k = 0; k < fields.nodes().size(); ++k)
+          for (unsigned int i = 0; i < n_fields; ++i)
+            change = std::max(
+              change,
+              (fields.dumbbell(fields.nodes()[k], i) - matched[k][i]).norm() /
+                matched[k][i].norm());
+        unit_test::check_below(out,
+                               name + "matched again, |q - q before|/|q|",
+                               Utilities::MPI::max(change, comm),
+                               1e-12);
+      }
+  }
 } // namespace
 
 int
@@ -354,5 +478,6 @@ main(int argc, char **argv)
     check_increments(out);
     check_field_update(out);
     check_variance_reduction(out);
+    check_match_to_stress(out);
   });
 }

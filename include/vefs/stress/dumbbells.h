@@ -107,6 +107,21 @@ namespace vefs
                       const Rheology<dim>    &rheology);
 
   /**
+   * After an interpolation of the fields q_i and the stress apart: maps the
+   * fields at each node by the moment_map() T nearest to the identity with
+   * <(T q) (T q)^T> = c + control_moment() - I, c the conformation of the
+   * node's stress, and then sets the ensemble stress. The interpolated <q q^T>
+   * is smaller than the interpolated c (a Jensen gap, O(1) where the fields
+   * vary across a cell, as at a moving contact line); the stress carries what
+   * the macroscopic run carries (doc/dumbbells.md, "Interpolation"). A node
+   * whose c + control_moment() - I is not positive definite keeps its fields.
+   */
+  template <int dim>
+  void
+  match_dumbbells_to_stress(TransportedFields<dim> &fields,
+                            const Rheology<dim>    &rheology);
+
+  /**
    * The dumbbells' step 9 of doc/time_step_flow.md (doc/dumbbells.md):
    * each liquid cell around a node carries its fields by E = exp(tau L)
    * (the macroscopic exponential update's L, strain bound included), and
