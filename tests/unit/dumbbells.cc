@@ -277,15 +277,18 @@ namespace
         << '\n';
   }
 
+  /** The unit square, 8 x 8 cells, boundary ids by side. */
   void
-  check_variance_reduction(std::ostream &out)
+  uniform_unit_square(parallel::distributed::Triangulation<2> &triangulation)
   {
-    const double                            tau      = 0.02;
-    const unsigned int                      n_fields = 50, seed = 3;
-    parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
     GridGenerator::hyper_cube(triangulation, 0, 1, true);
     triangulation.refine_global(3);
+  }
 
+  /** An Oldroyd-B liquid (alpha = 1) carried by dumbbells, G = 4. */
+  vefs::Rheology<2>
+  dumbbell_liquid()
+  {
     vefs::MaterialParameters material;
     material.polymer_viscosity = 2;
     material.relaxation_time   = 0.5;
@@ -293,9 +296,19 @@ namespace
     material.stress_model      = vefs::StressModel::dumbbells;
     vefs::StressParameters stress;
     stress.stress_update = vefs::StressUpdate::exponential;
-    const vefs::Rheology<2> liquid(material, stress, 0);
-    const double            G = liquid.shear_modulus();
-    const double            k = liquid.stress_factor(tau);
+    return vefs::Rheology<2>(material, stress, 0);
+  }
+
+  void
+  check_variance_reduction(std::ostream &out)
+  {
+    const double                            tau      = 0.02;
+    const unsigned int                      n_fields = 50, seed = 3;
+    parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
+    uniform_unit_square(triangulation);
+    const vefs::Rheology<2> liquid = dumbbell_liquid();
+    const double            G      = liquid.shear_modulus();
+    const double            k      = liquid.stress_factor(tau);
 
     const ScalarFunctionFromFunctionObject<2> everywhere_liquid(
       [](const Point<2> &) { return -1.; });
@@ -356,18 +369,9 @@ namespace
   {
     const unsigned int                      n_fields = 20, seed = 7;
     parallel::distributed::Triangulation<2> triangulation(MPI_COMM_WORLD);
-    GridGenerator::hyper_cube(triangulation, 0, 1, true);
-    triangulation.refine_global(3);
-
-    vefs::MaterialParameters material;
-    material.polymer_viscosity = 2;
-    material.relaxation_time   = 0.5;
-    material.alpha             = 1;
-    material.stress_model      = vefs::StressModel::dumbbells;
-    vefs::StressParameters stress;
-    stress.stress_update = vefs::StressUpdate::exponential;
-    const vefs::Rheology<2> liquid(material, stress, 0);
-    const double            G = liquid.shear_modulus();
+    uniform_unit_square(triangulation);
+    const vefs::Rheology<2> liquid = dumbbell_liquid();
+    const double            G      = liquid.shear_modulus();
 
     SymmetricTensor<2, 2> sigma_0;
     sigma_0[0][0] = 0.7 * G;
