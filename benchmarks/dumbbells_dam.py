@@ -19,7 +19,8 @@ Usage (from the repository root):
       [--set 'Mesh refinement/Maximum level=7' ...]
       [--results-dir benchmarks/results/dumbbells_dam] [--no-run]
 --set changes an entry in every run (the macroscopic one too), e.g. the
-resolution.
+resolution. Another scene: --scene prm/broken_dam_3d.prm --times 0.06 0.12
+0.18 --ranks 2 (with --set for its Oldroyd-B material).
 """
 
 import argparse
@@ -33,33 +34,37 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 
 from vefs_tools.prm import apply_settings  # noqa: E402
+from vefs_tools.run import vefs_command  # noqa: E402
 from vefs_tools.statistics import read_statistics  # noqa: E402
 
-SCENE = os.path.join(ROOT, "prm", "oldroyd_b_dam_2d.prm")
-TIMES = [0.1, 0.2, 0.25]
-COMMON = ["Time/End time=0.25", "Time/Scheme=first order",
+COMMON = ["Time/Scheme=first order",
           "Flow/Outside stress of cut cells=extension",
           "Stress/Stress update=exponential", "Output/Interval=0"]
 
 
-def run(vefs, directory, settings, skip):
+def run(args, directory, settings, skip):
     if not skip:
-        with open(SCENE) as f:
-            text = apply_settings(f.read(), COMMON + settings +
-                                  ["Output directory=" + directory])
+        with open(args.scene) as f:
+            text = apply_settings(
+                f.read(), COMMON + ["Time/End time=%g" % max(args.times)] +
+                settings + ["Output directory=" + directory])
         with open(directory + ".prm", "w") as f:
             f.write(text)
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+                   OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
         with open(directory + ".log", "w") as log:
-            subprocess.run([vefs, directory + ".prm"], stdout=log,
-                           stderr=subprocess.STDOUT, check=True)
+            subprocess.run(vefs_command(args.vefs, args.ranks,
+                                        directory + ".prm"),
+                           stdout=log, stderr=subprocess.STDOUT, env=env,
+                           check=True)
     s = read_statistics(directory)
 
     def at(column, t):
         i = min(range(len(s["time"])), key=lambda k: abs(s["time"][k] - t))
         return s[column][i]
 
-    return {"front": [at("floor_extent", t) for t in TIMES],
-            "height": [at("wall_height", t) for t in TIMES],
+    return {"front": [at("floor_extent", t) for t in args.times],
+            "height": [at("wall_height", t) for t in args.times],
             "wall": s["wall_time"][-1],
             "volume": max(abs(v) for v in s["volume_change"])}
 
@@ -67,6 +72,11 @@ def run(vefs, directory, settings, skip):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--vefs", default=os.path.join(ROOT, "build", "vefs"))
+    parser.add_argument("--scene", default=os.path.join(
+        ROOT, "prm", "oldroyd_b_dam_2d.prm"))
+    parser.add_argument("--times", type=float, nargs="+",
+                        default=[0.1, 0.2, 0.25])
+    parser.add_argument("--ranks", type=int, default=1)
     parser.add_argument("--fields", type=int, default=400)
     parser.add_argument("--seeds", type=int, nargs="+", default=[1, 2, 3])
     parser.add_argument("--results-dir", default=os.path.join(
@@ -80,9 +90,9 @@ def main():
     args = parser.parse_args()
     os.makedirs(args.results_dir, exist_ok=True)
 
-    macro = run(args.vefs, os.path.join(args.results_dir, "macroscopic"),
+    macro = run(args, os.path.join(args.results_dir, "macroscopic"),
                 args.set, args.no_run)
-    seeds = [run(args.vefs,
+    seeds = [run(args,
                  os.path.join(args.results_dir, "fields_%d_seed_%d_%s"
                               % (args.fields, seed, args.estimator)),
                  args.set + ["Material/Stress model=dumbbells",
@@ -94,9 +104,9 @@ def main():
              for seed in args.seeds]
 
     header = " | ".join("%s %g s" % (q, t) for q in ("front", "height")
-                        for t in TIMES)
+                        for t in args.times)
     print("| run | %s | max volume change | wall time |" % header)
-    print("|---|" + "---|" * (2 * len(TIMES) + 2))
+    print("|---|" + "---|" * (2 * len(args.times) + 2))
 
     def row(name, r):
         values = " | ".join("%.4f" % v for v in r["front"] + r["height"])
@@ -110,7 +120,7 @@ def main():
     if n > 1:
         cells = []
         for q in ("front", "height"):
-            for k in range(len(TIMES)):
+            for k in range(len(args.times)):
                 values = [r[q][k] for r in seeds]
                 mean = sum(values) / n
                 error = math.sqrt(sum((v - mean) ** 2 for v in values)
