@@ -172,6 +172,10 @@ namespace vefs
           }
         catch (const ExceptionBase &)
           {
+            // Interpolation and extension take convex combinations, which
+            // keep c positive definite; a node where it is not anyway (or
+            // whose fields have collapsed) keeps its fields, and its stress
+            // becomes theirs below.
             continue;
           }
         for (unsigned int i = 0; i < q.size(); ++i)
