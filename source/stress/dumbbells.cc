@@ -155,34 +155,40 @@ namespace vefs
   match_dumbbells_to_stress(TransportedFields<dim> &fields,
                             const Rheology<dim>    &rheology)
   {
+    const double                  G       = rheology.shear_modulus();
+    const SymmetricTensor<2, dim> control = control_moment(fields);
     const SymmetricTensor<2, dim> control_offset =
-      control_moment(fields) - unit_symmetric_tensor<dim>();
+      control - unit_symmetric_tensor<dim>();
     for (const auto &node : fields.nodes())
       {
-        const auto                    q = node_fields(fields, node);
+        auto                          q = node_fields(fields, node);
         const SymmetricTensor<2, dim> target =
           rheology.conformation(fields.stress(node)) + control_offset;
-        Tensor<2, dim> T;
         try
           {
-            T = dumbbells::moment_map<dim>(dumbbells::second_moment(q),
-                                           target,
-                                           Tensor<2, dim>(
-                                             unit_symmetric_tensor<dim>()));
+            const Tensor<2, dim> T =
+              dumbbells::moment_map<dim>(dumbbells::second_moment(q),
+                                         target,
+                                         Tensor<2, dim>(
+                                           unit_symmetric_tensor<dim>()));
+            for (unsigned int i = 0; i < q.size(); ++i)
+              {
+                q[i] = T * q[i];
+                fields.set_dumbbell(node, i, q[i]);
+              }
           }
         catch (const ExceptionBase &)
           {
             // Interpolation and extension take convex combinations, which
             // keep c positive definite; a node where it is not anyway (or
-            // whose fields have collapsed) keeps its fields, and its stress
-            // becomes theirs below.
-            continue;
+            // whose fields have collapsed) keeps its fields and takes their
+            // stress.
           }
-        for (unsigned int i = 0; i < q.size(); ++i)
-          fields.set_dumbbell(node, i, T * q[i]);
+        // The ensemble stress of the fields just set, as
+        // set_ensemble_stress() computes it, without a second pass.
+        fields.set_stress(node, G * (dumbbells::second_moment(q) - control));
       }
     fields.finalize();
-    set_ensemble_stress(fields, rheology);
   }
 
   template <int dim>

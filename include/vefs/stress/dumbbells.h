@@ -114,7 +114,8 @@ namespace vefs
    * is smaller than the interpolated c (a Jensen gap, O(1) where the fields
    * vary across a cell, as at a moving contact line); the stress carries what
    * the macroscopic run carries (doc/dumbbells.md, "Interpolation"). A node
-   * whose c + control_moment() - I is not positive definite keeps its fields.
+   * whose c + control_moment() - I is not positive definite keeps its fields
+   * and takes their stress.
    */
   template <int dim>
   void
