@@ -176,6 +176,7 @@ namespace vefs
     transport.resolve(mesh.band_predicted(),
                       mesh.band_in_one_change(),
                       stiff_solid_under_gravity);
+    solver.resolve(stiff_solid_under_gravity);
     flow.resolve(regime, material.has_dumbbells());
   }
 

@@ -299,7 +299,10 @@ main()
     // solid with the macroscopic stress, the second-order scheme and a
     // weight strain rho |g| L / (3 G) in (0, 1), L the cavity's largest
     // extent, unless the band is placed in one change; linear otherwise.
-    // An explicit value stays.
+    // 'Solver/Pressure stabilization = automatic': 0.05 for an elastic
+    // solid with the macroscopic stress, the second-order scheme and that
+    // weight strain (whatever the band), 0.25 otherwise. An explicit value
+    // stays.
     const auto velocity_interpolation = [](const std::string &top,
                                            const std::string &material,
                                            const std::string &time,
@@ -324,7 +327,10 @@ main()
              ", stress " +
              (parameters.transport.cubic_stress_interpolation()
                 ? "limited cubic"
-                : "linear");
+                : "linear") +
+             ", pressure stabilization " +
+             std::to_string(parameters.solver.pressure_stabilization)
+               .substr(0, 4);
     };
     // G = eta_p / lambda; with the defaults rho = 1000, g = 9.81 and the
     // cavity 0.28575 m wide the weight strain is 0.467 at G = 2000 Pa,
@@ -378,6 +384,13 @@ main()
                                   elastic("10"),
                                   "",
                                   "  set Velocity interpolation = linear\n")
+        << '\n';
+    out << "pressure stabilization 0.25, elastic solid (0.467): "
+        << velocity_interpolation(
+             "subsection Solver\n  set Pressure stabilization = 0.25\nend\n",
+             elastic("10"),
+             "",
+             "")
         << '\n';
     out << "velocity interpolation cubic, Newtonian liquid: "
         << velocity_interpolation("",

@@ -68,15 +68,24 @@ namespace vefs
     void
     check() const;
 
+    /**
+     * 'automatic' pressure stabilization: 0.05 for an elastic solid that
+     * holds its shape under its weight (0.25 lets it creep:
+     * doc/oscillating_beam.md, "A stiff beam at rest"), 0.25 otherwise.
+     */
+    void
+    resolve(const bool stiff_solid_under_gravity);
+
     double solver_tolerance = 1e-8;
     /** Of the solves while the contact set changes ('Contact tolerance'). */
     double       contact_solver_tolerance = 1e-4;
     unsigned int solver_max_iterations    = 1000;
     /** Smoother sweeps of both AMG V-cycles (velocity, Schur Laplacian). */
-    unsigned int amg_smoother_sweeps        = 4;
-    double       pressure_stabilization     = 0.25;
-    double       free_surface_stabilization = 0;
-    double       ghost_penalty              = 0.1;
+    unsigned int amg_smoother_sweeps              = 4;
+    double       pressure_stabilization           = 0.25;
+    bool         automatic_pressure_stabilization = true;
+    double       free_surface_stabilization       = 0;
+    double       ghost_penalty                    = 0.1;
   };
 
   /**
