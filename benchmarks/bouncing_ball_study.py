@@ -91,27 +91,32 @@ def main():
         "events from `scripts/vefs_tools/bounce.py`. h: finest cells at the "
         "surface; tau: the `Time step` bound (the CFL target shortens some "
         "steps). Heights in mm, times in ms; energy lost: 1 - E(lift-off) / "
-        "E(0), all of it numerical (the material has no dissipation)."
+        "E(0), all of it numerical (the material has no dissipation); v: the "
+        "liquid's mean vertical velocity at lift-off; contact loss: the "
+        "energy the first contact removes over the kinetic energy at impact."
         % args.end_time + ("" if not args.set else
                            " Changed entries: %s." % ", ".join(
                                "`%s`" % x for x in args.set)),
         "",
         "| h [mm] | tau [ms] | steps | max cells | max flow dofs | lowest "
-        "centroid [mm] | at [ms] | lift-off [ms] | rebound apex [mm] | at "
-        "[ms] | energy lost | max dV/V | wall time [s] |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        "centroid [mm] | at [ms] | lift-off [ms] | v [m/s] | rebound apex "
+        "[mm] | at [ms] | energy lost | contact loss | max dV/V | wall time "
+        "[s] |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for level, tau, e, steps, cells, dofs, wall in rows:
         lift = e["lift_off_time"] is not None
         lines.append(
-            "| %.2f | %g | %d | %d | %d | %.1f | %s | %s | %s | %s | %s | "
-            "%.1e | %.0f |" % (
+            "| %.2f | %g | %d | %d | %d | %.1f | %s | %s | %s | %s | %s | %s "
+            "| %s | %.1e | %.0f |" % (
                 100 / 2 ** level, 1000 * tau, steps, cells, dofs,
                 1000 * e["lowest_centroid"], ms(e["lowest_centroid_time"]),
                 ms(e["lift_off_time"]),
+                "%.3f" % e["lift_off_velocity"] if lift else "-",
                 "%.1f" % (1000 * e["apex"]) if lift else "-",
                 ms(e["apex_time"]) if lift else "-",
                 "%.0f %%" % (100 * (1 - e["energy_left"])) if lift else "-",
+                "%.1f %%" % (100 * e["contact_loss"]) if lift else "-",
                 e["max_volume_change"], wall))
     lines.append("")
     with open(args.output, "w") as f:

@@ -1,6 +1,7 @@
 """The events of a body that falls on a contact floor and bounces, read from
 a vefs statistics file: first contact, lowest centroid, lift-off (contact
-force back to zero), rebound apex, the floor's impulse over the first
+force back to zero) and the liquid's mean velocity there, rebound apex, the
+energy the first contact removes, the floor's impulse over the first
 contact and in each of its steps against Newton's second law for the
 centroid, energy left.
 
@@ -63,5 +64,10 @@ def bounce_events(directory):
                                     zip(step_impulse, step_momentum))
         / max(step_impulse),
         "energy_left": energy[lift] / energy[0],
+        "lift_off_velocity": v_mean[lift],
+        # What the first contact removes, over the kinetic energy the body
+        # brings to the floor (the material has none to dissipate).
+        "contact_loss": (energy[first - 1] - energy[lift])
+        / s["kinetic_energy"][first - 1],
     })
     return e
