@@ -141,8 +141,9 @@ namespace vefs
         "growing, against 0.325 mm with 0.05 and Timoshenko's 0.315 mm). "
         "Smaller c costs Krylov iterations (10-20 % at 0.02-0.01) and, in "
         "soft solids, steps (doc/bouncing_ball.md). automatic: 0.05 for an "
-        "elastic solid that holds its shape under its weight (the rule of "
-        "'Transport/Velocity interpolation'), 0.25 otherwise.");
+        "elastic solid (alpha = 0, macroscopic stress, second-order scheme) "
+        "that holds its shape under its weight, rho |g| L / (3 G) in (0, 1) "
+        "with L the cavity's largest extent; 0.25 otherwise.");
       prm.add_parameter(
         "Free surface stabilization",
         free_surface_stabilization,
