@@ -125,6 +125,20 @@ namespace vefs
         q[i] = fields.dumbbell(node, i);
       return q;
     }
+
+    /**
+     * sigma = G (<q q^T> - <p p^T>): the ensemble stress of one node's fields
+     * @p q, with @p control the control variates' moment <p p^T> (I without
+     * them).
+     */
+    template <int dim>
+    SymmetricTensor<2, dim>
+    ensemble_stress(const std::vector<Tensor<1, dim>> &q,
+                    const SymmetricTensor<2, dim>     &control,
+                    const double                       G)
+    {
+      return G * (dumbbells::second_moment(q) - control);
+    }
   } // namespace
 
   template <int dim>
@@ -144,9 +158,8 @@ namespace vefs
     const double                  G       = rheology.shear_modulus();
     const SymmetricTensor<2, dim> control = control_moment(fields);
     for (const auto &node : fields.nodes())
-      fields.set_stress(
-        node,
-        G * (dumbbells::second_moment(node_fields(fields, node)) - control));
+      fields.set_stress(node,
+                        ensemble_stress(node_fields(fields, node), control, G));
     fields.finalize();
   }
 
@@ -184,9 +197,8 @@ namespace vefs
             // whose fields have collapsed) keeps its fields and takes their
             // stress.
           }
-        // The ensemble stress of the fields just set, as
-        // set_ensemble_stress() computes it, without a second pass.
-        fields.set_stress(node, G * (dumbbells::second_moment(q) - control));
+        // The stress of the fields just set, in the same pass.
+        fields.set_stress(node, ensemble_stress(q, control, G));
       }
     fields.finalize();
   }
