@@ -35,11 +35,14 @@ namespace vefs
   } // namespace
 
   template <int dim>
-  FlowElements<dim>::FlowElements(const FlowParameters &parameters,
-                                  const unsigned int    max_level)
+  FlowElements<dim>::FlowElements(
+    const FlowParameters                  &parameters,
+    const unsigned int                     max_level,
+    const std::vector<types::boundary_id> &finest_walls)
     : level_offset(parameters.flow_level_offset)
     , flow_level(static_cast<int>(max_level) -
                  static_cast<int>(parameters.flow_level_offset))
+    , finest_walls(finest_walls)
     , all_components(dim + 1)
   {
     AssertThrow(flow_level >= 0, ExcInternalError());
@@ -302,6 +305,27 @@ namespace vefs
     IndexSet interpolated(dof_handler.n_dofs());
     interpolated.add_indices(dofs.begin(), dofs.end());
     interpolated.compress();
+    // A cell on the finest level that is its own element (at a contact
+    // wall) shares nodes with its coarser neighbours: those are constrained
+    // to the neighbour's interpolant but keep their rows, as hanging nodes
+    // do (the cell's matrix is added through the constraints, diagonal
+    // included).
+    if (!finest_walls.empty())
+      {
+        IndexSet                             own(dof_handler.n_dofs());
+        std::vector<types::global_dof_index> cell_dofs;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (!cell->is_artificial() && cell->active_fe_index() == fe_index &&
+              cell->level() > flow_level && !on_coarser_element(cell))
+            {
+              cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
+              cell->get_dof_indices(cell_dofs);
+              std::sort(cell_dofs.begin(), cell_dofs.end());
+              own.add_indices(cell_dofs.begin(), cell_dofs.end());
+            }
+        own.compress();
+        interpolated.subtract_set(own);
+      }
     return interpolated;
   }
 

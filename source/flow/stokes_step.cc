@@ -114,7 +114,11 @@ namespace vefs
     , dof_handler(triangulation)
     , rheology(rheology)
     , contact(parameters.cavity)
-    , elements(parameters.flow, parameters.max_level)
+    , elements(parameters.flow,
+               parameters.max_level,
+               parameters.flow.finest_at_contact_walls
+                 ? contact.boundary_ids()
+                 : std::vector<types::boundary_id>())
   {
     fe_collection.push_back(FESystem<dim>(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1));
     fe_collection.push_back(

@@ -41,6 +41,13 @@ namespace vefs
       return walls.empty();
     }
 
+    /** The boundary ids of the contact walls. */
+    const std::vector<types::boundary_id> &
+    boundary_ids() const
+    {
+      return walls;
+    }
+
     /** Whether liquid touches a contact wall on any rank (after reset()). */
     bool
     has_wall_unknowns() const

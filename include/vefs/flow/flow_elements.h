@@ -11,6 +11,7 @@
 #include <vefs/flow/flow_parameters.h>
 #include <vefs/transport/liquid_domain.h>
 
+#include <algorithm>
 #include <map>
 #include <vector>
 
@@ -31,6 +32,14 @@ namespace vefs
    * after a solve they hold the element's Q1 interpolant, so that the
    * transport, contact and output read the cells as before.
    *
+   * With 'Finest cells at contact walls' the elements on the flow level
+   * that touch a contact wall keep their cells as elements of their own:
+   * the contact set then lives on the finest cells' wall nodes, as with
+   * k = 0 (on a coarser element's wall vertices it stops a body while the
+   * liquid is still an element above the wall). Their nodes on the faces
+   * of coarser elements are interpolated from those, but stay the flow
+   * space's unknowns, as hanging nodes do.
+   *
    * An element's cells lie on one rank (with k = 1 p4est keeps a family of
    * active children together). A ghost cell's element may reach into
    * artificial cells, though: the ranks exchange the element's vertex
@@ -46,15 +55,36 @@ namespace vefs
     using ActiveCellIterator =
       typename Triangulation<dim>::active_cell_iterator;
 
-    /** @p max_level: the level of the finest cells. */
-    FlowElements(const FlowParameters &parameters,
-                 const unsigned int    max_level);
+    /**
+     * @p max_level: the level of the finest cells. Along the walls
+     * @p finest_walls (boundary ids) the cells are their own elements.
+     */
+    FlowElements(const FlowParameters                  &parameters,
+                 const unsigned int                     max_level,
+                 const std::vector<types::boundary_id> &finest_walls = {});
 
-    /** Whether the flow's element of @p cell is a coarser ancestor. */
+    /**
+     * Whether the flow's element of @p cell is a coarser ancestor: @p cell
+     * is finer than the flow level, and its ancestor on the flow level
+     * touches none of the finest walls.
+     */
     bool
     on_coarser_element(const CellIterator &cell) const
     {
-      return cell->level() > flow_level;
+      if (cell->level() <= flow_level)
+        return false;
+      if (finest_walls.empty())
+        return true;
+      CellIterator ancestor = cell;
+      while (ancestor->level() > flow_level)
+        ancestor = ancestor->parent();
+      for (const unsigned int f : ancestor->face_indices())
+        if (ancestor->at_boundary(f) &&
+            std::find(finest_walls.begin(),
+                      finest_walls.end(),
+                      ancestor->face(f)->boundary_id()) != finest_walls.end())
+          return false;
+      return true;
     }
 
     /** The cell that is the flow's element of @p cell (an iterator of
@@ -63,6 +93,8 @@ namespace vefs
     TriaIterator<Accessor>
     element(const TriaIterator<Accessor> &cell) const
     {
+      if (!on_coarser_element(cell))
+        return cell;
       TriaIterator<Accessor> ancestor = cell;
       while (ancestor->level() > flow_level)
         ancestor = ancestor->parent();
@@ -279,6 +311,12 @@ namespace vefs
     const unsigned int level_offset;
     /** The level of the coarser elements: the finest level minus k. */
     const int flow_level;
+    /**
+     * Boundary ids of the walls along which the cells stay their own
+     * elements (the contact walls with 'Finest cells at contact walls':
+     * doc/time_step_flow.md, "Flow on coarser cells").
+     */
+    const std::vector<types::boundary_id> finest_walls;
     /**
      * The non-zero weights (vertex, weight) of an element's vertices at the
      * vertices of its cells k' = 1..k levels finer: [k' - 1][position][v],

@@ -49,7 +49,12 @@ namespace vefs
     /** How many levels the flow's elements are coarser than the finest
      * cells ('Flow cells': finest 0, parents 1), see FlowElements. */
     unsigned int flow_level_offset = 0;
-    unsigned int extension_layers  = 4;
+    /**
+     * Whether the elements that touch a contact wall keep the finest cells
+     * ('Finest cells at contact walls'), see FlowElements.
+     */
+    bool         finest_at_contact_walls = false;
+    unsigned int extension_layers        = 4;
     /**
      * Whether the vertices of cut cells outside the liquid take the extended
      * velocity instead of the flow step's ('Outside velocity of cut cells').
