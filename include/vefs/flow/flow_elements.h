@@ -71,20 +71,8 @@ namespace vefs
     bool
     on_coarser_element(const CellIterator &cell) const
     {
-      if (cell->level() <= flow_level)
-        return false;
-      if (finest_walls.empty())
-        return true;
-      CellIterator ancestor = cell;
-      while (ancestor->level() > flow_level)
-        ancestor = ancestor->parent();
-      for (const unsigned int f : ancestor->face_indices())
-        if (ancestor->at_boundary(f) &&
-            std::find(finest_walls.begin(),
-                      finest_walls.end(),
-                      ancestor->face(f)->boundary_id()) != finest_walls.end())
-          return false;
-      return true;
+      return cell->level() > flow_level &&
+             !touches_finest_wall(flow_level_ancestor(cell));
     }
 
     /** The cell that is the flow's element of @p cell (an iterator of
@@ -93,12 +81,8 @@ namespace vefs
     TriaIterator<Accessor>
     element(const TriaIterator<Accessor> &cell) const
     {
-      if (!on_coarser_element(cell))
-        return cell;
-      TriaIterator<Accessor> ancestor = cell;
-      while (ancestor->level() > flow_level)
-        ancestor = ancestor->parent();
-      return ancestor;
+      const TriaIterator<Accessor> ancestor = flow_level_ancestor(cell);
+      return touches_finest_wall(ancestor) ? cell : ancestor;
     }
 
     /** The size h of the flow's element of @p cell (shortest edge). */
@@ -306,6 +290,32 @@ namespace vefs
       while (corner->has_children())
         corner = corner->child(v);
       return corner;
+    }
+
+    /** @p cell's ancestor on the flow level, or @p cell if not finer. */
+    template <typename Accessor>
+    TriaIterator<Accessor>
+    flow_level_ancestor(const TriaIterator<Accessor> &cell) const
+    {
+      TriaIterator<Accessor> ancestor = cell;
+      while (ancestor->level() > flow_level)
+        ancestor = ancestor->parent();
+      return ancestor;
+    }
+
+    /** Whether @p cell lies at one of the finest walls. */
+    bool
+    touches_finest_wall(const CellIterator &cell) const
+    {
+      if (finest_walls.empty())
+        return false;
+      for (const unsigned int f : cell->face_indices())
+        if (cell->at_boundary(f) &&
+            std::find(finest_walls.begin(),
+                      finest_walls.end(),
+                      cell->face(f)->boundary_id()) != finest_walls.end())
+          return true;
+      return false;
     }
 
     const unsigned int level_offset;
