@@ -154,7 +154,7 @@ namespace vefs
     stress.resolve(regime, material.has_dumbbells());
     // Steps kept through impacts (the seed's fixed steps) reach CFL
     // numbers of tens: the band is then refined ahead of the surface
-    // (doc/bouncing_ball_3d_study.md, "Settings compared").
+    // (doc/bouncing_ball_3d_study.md, "Settings of the fine scenes").
     const bool steps_fixed =
       !time.strain_bound_shortens_step && time.target_cfl == 0;
     mesh.resolve(steps_fixed && transport.feet_linear_without_remap());

@@ -75,8 +75,7 @@ namespace vefs
     // of refining and coarsening it until it matches p4est's: fewer passes
     // on several ranks, and the cells lie in memory in p4est's order (the
     // space-filling curve), which every loop over them gains from
-    // (doc/bouncing_ball_3d_study.md, "The local mesh rebuilt from the
-    // coarse cells").
+    // (doc/bouncing_ball_3d_study.md, "Settings of the fine scenes").
     , triangulation(comm,
                     Triangulation<dim>::limit_level_difference_at_vertices,
                     parallel::distributed::Triangulation<

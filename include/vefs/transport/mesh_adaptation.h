@@ -40,8 +40,8 @@ namespace vefs
      * widened by it fills the mesh; and the feet read the Q1 fields that
      * placement keeps), 'widened' otherwise. 'automatic' band width and
      * miss tolerance then take the values measured for the placement
-     * (doc/bouncing_ball_3d_study.md, "Settings compared"): a band of 2
-     * finest cells and a miss tolerance of 0.001 for the predicted
+     * (doc/bouncing_ball_3d_study.md, "Settings of the fine scenes"): a band of
+     * 2 finest cells and a miss tolerance of 0.001 for the predicted
      * placements, 4 cells (widened by the CFL number) and 0 otherwise.
      */
     void
