@@ -150,11 +150,10 @@ def main():
     rows = []
     for name in args.runs:
         base = os.path.join(args.results_dir, file_name(name))
-        out = base
         if not args.no_run:
             prm_file = base + ".prm"
             with open(prm_file, "w") as f:
-                f.write(make_prm(name, args.end_time, out))
+                f.write(make_prm(name, args.end_time, base))
             run = run_vefs(vefs_command(os.path.abspath(args.vefs), args.np,
                                         prm_file), base + ".log")
             if run.returncode != 0:
@@ -166,7 +165,7 @@ def main():
                            "revision": git_revision(args.vefs),
                            "max_rss_mb": run.max_rss_mb}, f)
             print("%s: %.1f s" % (name, run.wall), flush=True)
-        if not os.path.exists(os.path.join(out, "statistics")) or \
+        if not os.path.exists(os.path.join(base, "statistics")) or \
                 not os.path.exists(base + ".json"):
             print("%s: no run in %s" % (name, args.results_dir),
                   file=sys.stderr)
@@ -174,7 +173,7 @@ def main():
         with open(base + ".json") as f:
             info = json.load(f)
         rows.append((name, info["wall_time"], info["revision"],
-                     timer_seconds(base + ".log"), summary(out)))
+                     timer_seconds(base + ".log"), summary(base)))
 
     page = table(rows, args.np, args.end_time)
     print(page)
