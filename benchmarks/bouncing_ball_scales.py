@@ -69,6 +69,8 @@ def summary(directory):
     low = first_local_minimum(s["centroid_z"])
     strongest = max(range(len(t)), key=lambda k: s["contact_force"][k])
     at_wall = [tt for tt, h in zip(t, s["wall_height"]) if h > 0]
+    # The ring: a hole in the liquid seen from above.
+    torn = [tt for tt, area in zip(t, s.get("shadow_holes", [])) if area > 0]
     energy = s["total_energy"]
     return {
         "steps": len(t) - 1,
@@ -78,6 +80,8 @@ def summary(directory):
         "centroid": (s["centroid_z"][low], t[low]),
         "force": (s["contact_force"][strongest], t[strongest]),
         "sheet": at_wall[0] if at_wall else None,
+        "ring": (torn[0] if torn else None) if "shadow_holes" in s
+        else "not measured",
         "energy_left": energy[-1] / energy[0],
         "volume_change": max(abs(v) for v in s["volume_change"]),
         "lowest_point": min(s["lower_z"]),
@@ -104,27 +108,32 @@ def table(rows, np, end_time):
         "Transport / flow: the finest cells at the surface and the flow's "
         "cells, in mm; first lowest centroid: the first step where the "
         "centroid stops falling; sheet: the first step with liquid on the "
-        "x- wall; lowest point: the lowest liquid over all steps. Timer "
-        "sections in s." % (np, end_time),
+        "x- wall; ring: the first step with a hole in the liquid seen from "
+        "above (the sheet torn, statistics column shadow_holes); lowest "
+        "point: the lowest liquid over all steps. Timer sections in s."
+        % (np, end_time),
         "",
         "| transport / flow | steps | wall [s] | max cells | flow unknowns "
         "| first lowest centroid [mm] at [ms] | largest contact force [N] "
-        "at [ms] | sheet at the walls [ms] | energy left | max \\|dV/V\\| "
+        "at [ms] | sheet at the walls [ms] | ring [ms] | energy left "
+        "| max \\|dV/V\\| "
         "| lowest point [mm] | " +
         " | ".join(c for c, _ in SECTIONS) + " | revision |",
-        "|---" * (11 + len(SECTIONS) + 1) + "|",
+        "|---" * (12 + len(SECTIONS) + 1) + "|",
     ]
     for name, wall, revision, timers, s in rows:
-        sheet = "%.0f" % (1e3 * s["sheet"]) if s["sheet"] is not None \
-            else "none"
+        sheet, ring = ("none" if s[event] is None else s[event]
+                       if isinstance(s[event], str) else
+                       "%.0f" % (1e3 * s[event]) for event in ("sheet", "ring"))
         cells = ["%.0f" % sum(timers.get(x, float("nan")) for x in sections)
                  for _, sections in SECTIONS]
         lines.append(
             "| %s | %d | %.0f | %d | %d | %.2f at %.0f | %.1f at %.0f | %s "
-            "| %.3f | %.1e | %.2f | %s | %s |" % (
+            "| %s | %.3f | %.1e | %.2f | %s | %s |" % (
                 name, s["steps"], wall, s["cells"], s["dofs"],
                 1e3 * s["centroid"][0], 1e3 * s["centroid"][1],
-                s["force"][0], 1e3 * s["force"][1], sheet, s["energy_left"],
+                s["force"][0], 1e3 * s["force"][1], sheet, ring,
+                s["energy_left"],
                 s["volume_change"], 1e3 * s["lowest_point"],
                 " | ".join(cells), revision))
     return "\n".join(lines) + "\n"

@@ -57,6 +57,7 @@ namespace vefs
     add_column("max_velocity", [](const S &s) { return s.max_velocity; });
     add_column("floor_extent", [](const S &s) { return s.floor_extent; });
     add_column("wall_height", [](const S &s) { return s.wall_height; });
+    add_column("shadow_holes", [](const S &s) { return s.shadow_holes; });
     add_column("cells", [](const S &s) { return s.cells; });
     add_column("liquid_cells", [](const S &s) { return s.liquid_cells; });
     add_column("coarse_surface_cells",
@@ -192,7 +193,9 @@ namespace vefs
              "level set's liquid, cut out of the cells); volume_change: (volume - "
              "initial volume - inflow through the walls) / initial volume; "
              "floor_extent: largest x of liquid on the floor; "
-             "wall_height: highest liquid on the x- wall; lower_x, "
+             "wall_height: highest liquid on the x- wall; "
+             "shadow_holes: area (length in 2D) of the holes in the "
+             "liquid seen from above (a sheet torn into a ring); lower_x, "
              "upper_x, ...: the box around the liquid; centroid_velocity_x, "
              "...: mean velocity of the liquid; total_energy: kinetic + "
              "potential + elastic; coarse_surface_cells: cells crossed by "

@@ -2,6 +2,7 @@
 
 #include <vefs/base/parameter_entries.h>
 #include <vefs/io/postprocessing.h>
+#include <vefs/io/shadow_holes.h>
 #include <vefs/stress/mechanical_energy.h>
 #include <vefs/transport/free_surface.h>
 
@@ -174,6 +175,7 @@ namespace vefs
       liquid_extent_on_wall(fields, 2 * vertical, 0, cavity.cavity_lower[0]);
     s.wall_height =
       liquid_extent_on_wall(fields, 0, vertical, cavity.cavity_lower[vertical]);
+    s.shadow_holes = shadow_holes(fields, cavity);
     s.cells = fields.dof_handler.get_triangulation().n_global_active_cells();
   }
 

@@ -38,16 +38,21 @@ namespace vefs
      * The box around the liquid: lowest point, width, the free end of a
      * beam (see widen_to_liquid() in postprocessing.cc).
      */
-    Point<dim>   liquid_lower;
-    Point<dim>   liquid_upper;
-    double       kinetic_energy   = 0;
-    double       potential_energy = 0;
-    double       elastic_energy   = 0;
-    double       max_velocity     = 0;
-    double       floor_extent     = 0;
-    double       wall_height      = 0;
-    unsigned int cells            = 0;
-    unsigned int liquid_cells     = 0;
+    Point<dim> liquid_lower;
+    Point<dim> liquid_upper;
+    double     kinetic_energy   = 0;
+    double     potential_energy = 0;
+    double     elastic_energy   = 0;
+    double     max_velocity     = 0;
+    double     floor_extent     = 0;
+    double     wall_height      = 0;
+    /**
+     * The holes in the liquid seen from above (shadow_holes()): positive
+     * once a ball's sheet has torn and gathered into a ring.
+     */
+    double       shadow_holes = 0;
+    unsigned int cells        = 0;
+    unsigned int liquid_cells = 0;
     /**
      * Cells crossed by the surface right after the advection that are not
      * at the finest level (count_surface_cells()).
