@@ -24,19 +24,29 @@ namespace vefs
       return false;
     };
 
-    // The raster: cells of the smallest liquid cell's footprint, numbered
-    // x first (the cells are boxes: vertex 0 is the lower corner).
+    // The footprints of the owned cells that hold liquid (the cells are
+    // boxes: vertex 0 is the lower corner, the last vertex the upper one),
+    // and the smallest one's size: the raster's cells.
+    std::vector<std::pair<Point<dim>, Point<dim>>> footprints;
     std::array<double, 2> size{{std::numeric_limits<double>::max(), 1}};
     if (vertical == 2)
       size[1] = size[0];
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && holds_liquid(cell))
-        for (unsigned int d = 0; d < vertical; ++d)
-          size[d] = std::min(size[d], cell->extent_in_direction(d));
+        {
+          footprints.emplace_back(cell->vertex(0),
+                                  cell->vertex(cell->n_vertices() - 1));
+          for (unsigned int d = 0; d < vertical; ++d)
+            size[d] = std::min(size[d],
+                               footprints.back().second[d] -
+                                 footprints.back().first[d]);
+        }
     for (unsigned int d = 0; d < vertical; ++d)
       size[d] = Utilities::MPI::min(size[d], comm);
     if (size[0] == std::numeric_limits<double>::max())
       return 0;
+
+    // The raster over the floor, numbered x first.
     std::array<unsigned int, 2> n{{1, 1}};
     for (unsigned int d = 0; d < vertical; ++d)
       n[d] = static_cast<unsigned int>(std::lround(
@@ -53,19 +63,18 @@ namespace vefs
     };
     std::vector<unsigned char> raster(static_cast<std::size_t>(n[0]) * n[1],
                                       uncovered);
-    for (const auto &cell : fields.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && holds_liquid(cell))
-        {
-          std::array<unsigned int, 2> first{{0, 0}}, end{{1, 1}};
-          for (unsigned int d = 0; d < vertical; ++d)
-            {
-              first[d] = raster_index(cell->vertex(0)[d], d);
-              end[d] = raster_index(cell->vertex(cell->n_vertices() - 1)[d], d);
-            }
-          for (unsigned int j = first[1]; j < end[1]; ++j)
-            for (unsigned int i = first[0]; i < end[0]; ++i)
-              raster[i + static_cast<std::size_t>(n[0]) * j] = shadow;
-        }
+    for (const auto &[lower, upper] : footprints)
+      {
+        std::array<unsigned int, 2> first{{0, 0}}, end{{1, 1}};
+        for (unsigned int d = 0; d < vertical; ++d)
+          {
+            first[d] = raster_index(lower[d], d);
+            end[d]   = raster_index(upper[d], d);
+          }
+        for (unsigned int j = first[1]; j < end[1]; ++j)
+          for (unsigned int i = first[0]; i < end[0]; ++i)
+            raster[i + static_cast<std::size_t>(n[0]) * j] = shadow;
+      }
     const int ierr = MPI_Allreduce(MPI_IN_PLACE,
                                    raster.data(),
                                    raster.size(),
