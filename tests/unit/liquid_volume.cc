@@ -23,7 +23,6 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
-#include <deal.II/grid/grid_generator.h>
 
 #include <vefs/compat/box_q1_values.h>
 #include <vefs/transport/free_surface.h>
@@ -64,24 +63,6 @@ namespace
 
   template <int dim>
   void
-  make_cavity(parallel::distributed::Triangulation<dim> &triangulation)
-  {
-    // [-1, 1]^dim in 2^dim coarse cells, as the scenes' subdivided boxes.
-    Point<dim> lower, upper;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        lower[d] = -1;
-        upper[d] = 1;
-      }
-    GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                              std::vector<unsigned int>(dim, 2),
-                                              lower,
-                                              upper,
-                                              true);
-  }
-
-  template <int dim>
-  void
   check_plane(std::ostream &out)
   {
     // n . x < offset, n not aligned with the mesh, |n| = 1.
@@ -91,24 +72,16 @@ namespace
     normal /= normal.norm();
     const double offset = 0.23;
 
-    parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
-    make_cavity(triangulation);
-    triangulation.refine_global(2);
-    vefs::TransportedFields<dim> fields(triangulation, false, false, {});
     const ScalarFunctionFromFunctionObject<dim> plane(
       [&](const Point<dim> &p) { return normal * p - offset; });
     const Functions::ZeroFunction<dim> velocity(dim);
-    // Two levels more around the plane, one of them on a part of it only:
-    // hanging nodes on the surface.
-    for (unsigned int cycle = 0; cycle < 2; ++cycle)
-      {
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned() &&
-              std::abs(plane.value(cell->center())) < cell->diameter() &&
-              (cycle == 0 || cell->center()[0] < 0.2))
-            cell->set_refine_flag();
-        triangulation.execute_coarsening_and_refinement();
-      }
+    // Hanging nodes on the surface.
+    parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
+    unit_test::make_box_refined_around<dim>(triangulation,
+                                            [&](const Point<dim> &p) {
+                                              return plane.value(p);
+                                            });
+    vefs::TransportedFields<dim> fields(triangulation, false, false, {});
     fields.setup_dofs();
     fields.interpolate(plane, velocity);
 
@@ -184,7 +157,7 @@ namespace
     for (unsigned int level = coarsest; level < coarsest + 3; ++level)
       {
         parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
-        make_cavity(triangulation);
+        unit_test::make_box(triangulation);
         triangulation.refine_global(level);
         vefs::TransportedFields<dim> fields(triangulation, false, false, {});
         fields.setup_dofs();

@@ -20,7 +20,6 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/distributed/tria.h>
-#include <deal.II/grid/grid_generator.h>
 
 #include <vefs/io/shadow_holes.h>
 
@@ -37,28 +36,8 @@ namespace
     vefs::CavityParameters cavity;
     cavity.cavity_lower = std::vector<double>(dim, -1.);
     cavity.cavity_upper = std::vector<double>(dim, 1.);
-    Point<dim> lower, upper;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        lower[d] = -1;
-        upper[d] = 1;
-      }
     parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
-    GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                              std::vector<unsigned int>(dim, 2),
-                                              lower,
-                                              upper,
-                                              true);
-    triangulation.refine_global(2);
-    for (unsigned int cycle = 0; cycle < 2; ++cycle)
-      {
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned() &&
-              std::abs(psi(cell->center())) < cell->diameter() &&
-              (cycle == 0 || cell->center()[0] < 0.2))
-            cell->set_refine_flag();
-        triangulation.execute_coarsening_and_refinement();
-      }
+    unit_test::make_box_refined_around(triangulation, psi);
     vefs::TransportedFields<dim> fields(triangulation, false, false, {});
     fields.setup_dofs();
     fields.interpolate(ScalarFunctionFromFunctionObject<dim>(psi),

@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <ostream>
@@ -124,6 +125,44 @@ namespace unit_test
     for (unsigned int d = 0; d < dim; ++d)
       p[d] = value;
     return p;
+  }
+
+  /** [-1, 1]^dim from 2^dim coarse cells, boundary ids by face. */
+  template <int dim>
+  void
+  make_box(dealii::parallel::distributed::Triangulation<dim> &triangulation)
+  {
+    dealii::GridGenerator::subdivided_hyper_rectangle(
+      triangulation,
+      std::vector<unsigned int>(dim, 2),
+      filled<dim>(-1),
+      filled<dim>(1),
+      true);
+  }
+
+  /**
+   * make_box() refined twice, then twice more where the zero set of @p psi
+   * is nearer than a cell's diameter to its centre, the second time for
+   * x < 0.2 only: hanging nodes on the surface psi = 0, cells of three
+   * sizes along it.
+   */
+  template <int dim>
+  void
+  make_box_refined_around(
+    dealii::parallel::distributed::Triangulation<dim>       &triangulation,
+    const std::function<double(const dealii::Point<dim> &)> &psi)
+  {
+    make_box(triangulation);
+    triangulation.refine_global(2);
+    for (unsigned int cycle = 0; cycle < 2; ++cycle)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              std::abs(psi(cell->center())) < cell->diameter() &&
+              (cycle == 0 || cell->center()[0] < 0.2))
+            cell->set_refine_flag();
+        triangulation.execute_coarsening_and_refinement();
+      }
   }
 
   /**
