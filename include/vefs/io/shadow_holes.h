@@ -7,9 +7,10 @@
 namespace vefs
 {
   /**
-   * The area (length in 2D) of the holes in the liquid seen from above:
-   * the liquid's shadow on the floor is the footprint of the cells that
-   * hold liquid (a vertex with a negative level set); a hole is floor
+   * The area (length in 2D) of the holes in the liquid seen from above
+   * (along the last coordinate, onto the cavity's lowest face in it, the
+   * floor): the liquid's shadow on the floor is the footprint of the cells
+   * that hold liquid (a vertex with a negative level set); a hole is floor
    * outside the shadow that the shadow encloses. A ball spread into a sheet
    * that tears and gathers into a ring has one; a sheet lifted off the
    * floor or leaving the corners dry has none
