@@ -8,6 +8,7 @@ Usage (from anywhere):
       [--runs 5/5 2.5/5 2.5/10 [1.25/5]] [--np 2] [--end-time 1.35]
       [--results-dir benchmarks/results/bouncing_ball_scales]
       [--output benchmarks/results/bouncing_ball_scales.md] [--no-run]
+      [--plot doc/bouncing_ball_3d_scales.png]
 
 Runs (transport / flow cells in mm): 5/5 is prm/bouncing_ball_fine.prm with
 'Maximum level = 2' and 'Flow cells = finest', 2.5/5 the scene itself,
@@ -15,7 +16,9 @@ Runs (transport / flow cells in mm): 5/5 is prm/bouncing_ball_fine.prm with
 prm/bouncing_ball_seed.prm (about 1.5 h on 2 ranks: not run by default).
 Each run has no frames; its output goes to <results-dir>/<name>/, its log
 to <name>.log, its wall time and revision to <name>.json. The page written
-is doc/bouncing_ball_3d_study.md's table "All 54 steps".
+is doc/bouncing_ball_3d_study.md's table "All 54 steps"; --plot draws the
+runs' centroid height, contact force, sheet height on the x- wall, holes
+seen from above, energy and wall time against t (the page's figure).
 """
 import argparse
 import json
@@ -88,6 +91,39 @@ def summary(directory):
     }
 
 
+def plot(runs, png):
+    """The events' quantities of each run against time, one panel each."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    panels = [
+        ("centroid height [mm]", lambda s: [1e3 * z for z in s["centroid_z"]]),
+        ("contact force [N]", lambda s: s["contact_force"]),
+        ("liquid on the x- wall: highest [mm]",
+         lambda s: [1e3 * h for h in s["wall_height"]]),
+        ("holes seen from above [cm^2]",
+         lambda s: [1e4 * a for a in s.get("shadow_holes", [])]),
+        ("energy / energy at t = 0",
+         lambda s: [e / s["total_energy"][0] for e in s["total_energy"]]),
+        ("wall time since the start [s]", lambda s: s["wall_time"]),
+    ]
+    fig, axes = plt.subplots(2, 3, figsize=(13, 6.5))
+    for axis, (label, values) in zip(axes.flat, panels):
+        for name, s in runs:
+            y = values(s)
+            if y:
+                axis.plot(s["time"], y, ".-", markersize=3,
+                          label="%s mm" % name)
+        axis.set_xlabel("t [s]")
+        axis.set_ylabel(label)
+        axis.grid(alpha=0.3)
+    axes.flat[0].legend(title="transport / flow", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(png, dpi=100)
+    print("wrote %s" % png)
+
+
 def make_prm(name, end_time, output_dir):
     scene, entries = RUNS[name]
     with open(os.path.join(ROOT, "prm", scene)) as f:
@@ -153,10 +189,13 @@ def main():
         ROOT, "benchmarks", "results", "bouncing_ball_scales.md"))
     parser.add_argument("--no-run", action="store_true",
                         help="tabulate the runs already in --results-dir")
+    parser.add_argument("--plot", metavar="PNG",
+                        help="also draw the runs against time into PNG")
     args = parser.parse_args()
 
     results_directory(args.results_dir)
     rows = []
+    series = []
     for name in args.runs:
         base = os.path.join(args.results_dir, file_name(name))
         if not args.no_run:
@@ -183,12 +222,15 @@ def main():
             info = json.load(f)
         rows.append((name, info["wall_time"], info["revision"],
                      timer_seconds(base + ".log"), summary(base)))
+        series.append((name, read_statistics(base)))
 
     page = table(rows, args.np, args.end_time)
     print(page)
     os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
     with open(args.output, "w") as f:
         f.write(page)
+    if args.plot:
+        plot(series, args.plot)
     return 0 if len(rows) == len(args.runs) else 1
 
 
