@@ -146,27 +146,30 @@ def table(rows, np, end_time):
         "centroid stops falling; sheet: the first step with liquid on the "
         "x- wall; ring: the first step with a hole in the liquid seen from "
         "above (the sheet torn, statistics column shadow_holes); lowest "
-        "point: the lowest liquid over all steps. Timer sections in s."
+        "point: the lowest liquid over all steps; peak memory: the largest "
+        "resident set of one process. Timer sections in s."
         % (np, end_time),
         "",
-        "| transport / flow | steps | wall [s] | max cells | flow unknowns "
+        "| transport / flow | steps | wall [s] | peak memory of a rank [GB] "
+        "| max cells | flow unknowns "
         "| first lowest centroid [mm] at [ms] | largest contact force [N] "
         "at [ms] | sheet at the walls [ms] | ring [ms] | energy left "
         "| max \\|dV/V\\| "
         "| lowest point [mm] | " +
         " | ".join(c for c, _ in SECTIONS) + " | revision |",
-        "|---" * (12 + len(SECTIONS) + 1) + "|",
+        "|---" * (13 + len(SECTIONS) + 1) + "|",
     ]
-    for name, wall, revision, timers, s in rows:
+    for name, wall, memory, revision, timers, s in rows:
         sheet, ring = ("none" if s[event] is None else s[event]
                        if isinstance(s[event], str) else
-                       "%.0f" % (1e3 * s[event]) for event in ("sheet", "ring"))
+                       "%.0f" % (1e3 * s[event])
+                       for event in ("sheet", "ring"))
         cells = ["%.0f" % sum(timers.get(x, float("nan")) for x in sections)
                  for _, sections in SECTIONS]
         lines.append(
-            "| %s | %d | %.0f | %d | %d | %.2f at %.0f | %.1f at %.0f | %s "
-            "| %s | %.3f | %.1e | %.2f | %s | %s |" % (
-                name, s["steps"], wall, s["cells"], s["dofs"],
+            "| %s | %d | %.0f | %.2f | %d | %d | %.2f at %.0f "
+            "| %.1f at %.0f | %s | %s | %.3f | %.1e | %.2f | %s | %s |" % (
+                name, s["steps"], wall, memory / 1024, s["cells"], s["dofs"],
                 1e3 * s["centroid"][0], 1e3 * s["centroid"][1],
                 s["force"][0], 1e3 * s["force"][1], sheet, ring,
                 s["energy_left"],
@@ -220,7 +223,8 @@ def main():
             continue
         with open(base + ".json") as f:
             info = json.load(f)
-        rows.append((name, info["wall_time"], info["revision"],
+        rows.append((name, info["wall_time"], info["max_rss_mb"],
+                     info["revision"],
                      timer_seconds(base + ".log"), summary(base)))
         series.append((name, read_statistics(base)))
 
