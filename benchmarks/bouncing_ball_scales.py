@@ -13,12 +13,12 @@ Usage (from anywhere):
 Runs (transport / flow cells in mm): 5/5 is prm/bouncing_ball_fine.prm with
 'Maximum level = 2' and 'Flow cells = finest', 2.5/5 the scene itself,
 2.5/10 the scene with 'Flow cells = grandparents', 1.25/5
-prm/bouncing_ball_seed.prm (about 1.5 h on 2 ranks: not run by default).
+prm/bouncing_ball_seed.prm (1.5 h on 2 ranks: not run by default).
 Each run has no frames; its output goes to <results-dir>/<name>/, its log
 to <name>.log, its wall time and revision to <name>.json. The page written
 is doc/bouncing_ball_3d_study.md's table "All 54 steps"; --plot draws the
-runs' centroid height, contact force, sheet height on the x- wall, holes
-seen from above, energy and wall time against t (the page's figure).
+runs' centroid height, contact force, sheet height on the x- wall, cells,
+energy and wall time against t (the page's figure).
 """
 import argparse
 import json
@@ -102,8 +102,7 @@ def plot(runs, png):
         ("contact force [N]", lambda s: s["contact_force"]),
         ("liquid on the x- wall: highest [mm]",
          lambda s: [1e3 * h for h in s["wall_height"]]),
-        ("holes seen from above [cm^2]",
-         lambda s: [1e4 * a for a in s.get("shadow_holes", [])]),
+        ("cells of the mesh", lambda s: s["cells"]),
         ("energy / energy at t = 0",
          lambda s: [e / s["total_energy"][0] for e in s["total_energy"]]),
         ("wall time since the start [s]", lambda s: s["wall_time"]),
@@ -118,6 +117,8 @@ def plot(runs, png):
         axis.set_xlabel("t [s]")
         axis.set_ylabel(label)
         axis.grid(alpha=0.3)
+        if label.startswith("cells"):
+            axis.set_yscale("log")
     axes.flat[0].legend(title="transport / flow", fontsize=8)
     fig.tight_layout()
     fig.savefig(png, dpi=100)
