@@ -66,8 +66,8 @@ def first_local_minimum(values):
     return min(range(len(values)), key=lambda k: values[k])
 
 
-def summary(directory):
-    s = read_statistics(directory)
+def summary(s):
+    """The events of one run from its statistics s."""
     t = s["time"]
     low = first_local_minimum(s["centroid_z"])
     strongest = max(range(len(t)), key=lambda k: s["contact_force"][k])
@@ -110,10 +110,8 @@ def plot(runs, png):
     fig, axes = plt.subplots(2, 3, figsize=(13, 6.5))
     for axis, (label, values) in zip(axes.flat, panels):
         for name, s in runs:
-            y = values(s)
-            if y:
-                axis.plot(s["time"], y, ".-", markersize=3,
-                          label="%s mm" % name)
+            axis.plot(s["time"], values(s), ".-", markersize=3,
+                      label="%s mm" % name)
         axis.set_xlabel("t [s]")
         axis.set_ylabel(label)
         axis.grid(alpha=0.3)
@@ -224,10 +222,11 @@ def main():
             continue
         with open(base + ".json") as f:
             info = json.load(f)
+        statistics = read_statistics(base)
         rows.append((name, info["wall_time"], info["max_rss_mb"],
                      info["revision"],
-                     timer_seconds(base + ".log"), summary(base)))
-        series.append((name, read_statistics(base)))
+                     timer_seconds(base + ".log"), summary(statistics)))
+        series.append((name, statistics))
 
     page = table(rows, args.np, args.end_time)
     print(page)
