@@ -97,26 +97,28 @@ def plot(runs, png):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    # (label, values, y scale)
     panels = [
-        ("centroid height [mm]", lambda s: [1e3 * z for z in s["centroid_z"]]),
-        ("contact force [N]", lambda s: s["contact_force"]),
+        ("centroid height [mm]",
+         lambda s: [1e3 * z for z in s["centroid_z"]], "linear"),
+        ("contact force [N]", lambda s: s["contact_force"], "linear"),
         ("liquid on the x- wall: highest [mm]",
-         lambda s: [1e3 * h for h in s["wall_height"]]),
-        ("cells of the mesh", lambda s: s["cells"]),
+         lambda s: [1e3 * h for h in s["wall_height"]], "linear"),
+        ("cells of the mesh", lambda s: s["cells"], "log"),
         ("energy / energy at t = 0",
-         lambda s: [e / s["total_energy"][0] for e in s["total_energy"]]),
-        ("wall time since the start [s]", lambda s: s["wall_time"]),
+         lambda s: [e / s["total_energy"][0] for e in s["total_energy"]],
+         "linear"),
+        ("wall time since the start [s]", lambda s: s["wall_time"], "linear"),
     ]
     fig, axes = plt.subplots(2, 3, figsize=(13, 6.5))
-    for axis, (label, values) in zip(axes.flat, panels):
+    for axis, (label, values, scale) in zip(axes.flat, panels):
         for name, s in runs:
             axis.plot(s["time"], values(s), ".-", markersize=3,
                       label="%s mm" % name)
         axis.set_xlabel("t [s]")
         axis.set_ylabel(label)
+        axis.set_yscale(scale)
         axis.grid(alpha=0.3)
-        if label.startswith("cells"):
-            axis.set_yscale("log")
     axes.flat[0].legend(title="transport / flow", fontsize=8)
     fig.tight_layout()
     fig.savefig(png, dpi=100)

@@ -72,15 +72,12 @@ namespace
     normal /= normal.norm();
     const double offset = 0.23;
 
-    const ScalarFunctionFromFunctionObject<dim> plane(
-      [&](const Point<dim> &p) { return normal * p - offset; });
-    const Functions::ZeroFunction<dim> velocity(dim);
+    const auto psi = [&](const Point<dim> &p) { return normal * p - offset; };
+    const ScalarFunctionFromFunctionObject<dim> plane(psi);
+    const Functions::ZeroFunction<dim>          velocity(dim);
     // Hanging nodes on the surface.
     parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
-    unit_test::make_box_refined_around<dim>(triangulation,
-                                            [&](const Point<dim> &p) {
-                                              return plane.value(p);
-                                            });
+    unit_test::make_box_refined_around<dim>(triangulation, psi);
     vefs::TransportedFields<dim> fields(triangulation, false, false, {});
     fields.setup_dofs();
     fields.interpolate(plane, velocity);

@@ -127,17 +127,21 @@ namespace unit_test
     return p;
   }
 
-  /** [-1, 1]^dim from 2^dim coarse cells, boundary ids by face. */
+  /**
+   * [-1, 1]^dim from 2^dim coarse cells, boundary ids by face. Returns the
+   * coarse subdivisions (for a BoxMeshLocator).
+   */
   template <int dim>
-  void
+  std::vector<unsigned int>
   make_box(dealii::parallel::distributed::Triangulation<dim> &triangulation)
   {
-    dealii::GridGenerator::subdivided_hyper_rectangle(
-      triangulation,
-      std::vector<unsigned int>(dim, 2),
-      filled<dim>(-1),
-      filled<dim>(1),
-      true);
+    const std::vector<unsigned int> subdivisions(dim, 2);
+    dealii::GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                                      subdivisions,
+                                                      filled<dim>(-1),
+                                                      filled<dim>(1),
+                                                      true);
+    return subdivisions;
   }
 
   /**
@@ -166,22 +170,16 @@ namespace unit_test
   }
 
   /**
-   * [-1, 1]^dim from 2^dim coarse cells refined 3 times (2D) or twice (3D),
-   * and the cells with x > 0.1 and y > -0.3 once more: paths across it
-   * cross hanging nodes (and, on 2 ranks, the partition). Returns the coarse
-   * subdivisions (for a BoxMeshLocator).
+   * make_box() refined 3 times (2D) or twice (3D), and the cells with
+   * x > 0.1 and y > -0.3 once more: paths across it cross hanging nodes
+   * (and, on 2 ranks, the partition). Returns the coarse subdivisions.
    */
   template <int dim>
   std::vector<unsigned int>
   make_box_with_finer_patch(
     dealii::parallel::distributed::Triangulation<dim> &triangulation)
   {
-    const std::vector<unsigned int> subdivisions(dim, 2);
-    dealii::GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                                      subdivisions,
-                                                      filled<dim>(-1),
-                                                      filled<dim>(1),
-                                                      true);
+    const auto subdivisions = make_box(triangulation);
     triangulation.refine_global(dim == 2 ? 3 : 2);
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned() && cell->center()[0] > 0.1 &&
