@@ -64,6 +64,7 @@ namespace vefs
                                   parameters.level_set_interpolation,
                                   surface_ahead,
                                   mesh_parameters.band_in_one_change(),
+                                  mesh_parameters.band_miss_tolerance,
                                   coarsened_detail);
         statistics.advected_cells = triangulation.n_global_active_cells();
       }

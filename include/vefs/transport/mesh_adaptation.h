@@ -266,11 +266,12 @@ namespace vefs
    * Before an advection ('Band placement = predicted'): adapt the mesh
    * toward the present surface and @p surface_ahead, the level set the
    * advection will give (predict_level_set()), one cycle at a time until
-   * the predicted surface lies in cells of the finest level, at most
-   * @p max_cycles times. With @p coarsen_present_band the first cycle also
-   * coarsens the present band (PresentBand::coarsened), keeping the
-   * coarsened cells' fields in @p coarsened_detail, whose ghost cells get
-   * theirs at the end. Returns the number of mesh changes made.
+   * the predicted surface lies in cells of the finest level, but for at
+   * most the fraction @p miss_tolerance of the cells it crosses ('Band miss
+   * tolerance'), at most @p max_cycles times. With @p coarsen_present_band
+   * the first cycle also coarsens the present band (PresentBand::coarsened),
+   * keeping the coarsened cells' fields in @p coarsened_detail, whose ghost
+   * cells get theirs at the end. Returns the number of mesh changes made.
    */
   template <int dim>
   unsigned int
@@ -283,6 +284,7 @@ namespace vefs
     const LevelSetInterpolation                  interpolation,
     typename TransportedFields<dim>::VectorType &surface_ahead,
     const bool                                   coarsen_present_band,
+    const double                                 miss_tolerance,
     CoarsenedDetail<dim>                        &coarsened_detail);
 } // namespace vefs
 
