@@ -542,9 +542,9 @@ namespace vefs
     // The halo makes one cycle enough unless the surface moves farther than
     // the last step's: more cycles then, until the predicted surface lies
     // in finest cells. Each cycle rebuilds and transfers the whole mesh, so
-    // a few cells left coarse do not get one (the 1.25 mm ball after its
-    // impact: 24-51 of 230,000 left at 2.5 mm, the second cycle 17 s of a
-    // 100 s step).
+    // none is spent on a few cells left coarse (the 1.25 mm ball after its
+    // impact: 24-51 of 230,000 left at 2.5 mm, a second cycle 13-17 s of a
+    // 72-100 s step).
     unsigned int changes = 0;
     for (unsigned int cycle = 0; cycle < max_cycles; ++cycle)
       {
