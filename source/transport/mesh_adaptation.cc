@@ -563,9 +563,8 @@ namespace vefs
                         &coarsened_detail))
           break;
         ++changes;
-        const SurfaceCells ahead =
-          count_surface_cells(fields, surface_ahead, levels.max_level);
-        if (ahead.coarse <= miss_tolerance * ahead.total)
+        if (count_surface_cells(fields, surface_ahead, levels.max_level)
+              .within(miss_tolerance))
           break;
       }
     if (coarsen_present_band)

@@ -117,9 +117,8 @@ namespace vefs
     const SurfaceCells surface =
       count_surface_cells(fields, mesh_parameters.max_level);
     statistics.coarse_surface_cells = surface.coarse;
-    if (remap &&
-        (!mesh_parameters.band_in_one_change() ||
-         surface.coarse > mesh_parameters.band_miss_tolerance * surface.total))
+    if (remap && (!mesh_parameters.band_in_one_change() ||
+                  !surface.within(mesh_parameters.band_miss_tolerance)))
       {
         levels.expect_cfl(std::max(time.expected_cfl(),
                                    level_set_history.cells_between_remaps()));

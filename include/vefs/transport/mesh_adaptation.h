@@ -242,6 +242,17 @@ namespace vefs
     unsigned int coarse = 0;
     /** All of them. */
     unsigned int total = 0;
+
+    /**
+     * Whether the band kept up but for at most the fraction
+     * @p miss_tolerance of the cells ('Band miss tolerance'): no mesh
+     * change for the rest.
+     */
+    bool
+    within(const double miss_tolerance) const
+    {
+      return coarse <= miss_tolerance * total;
+    }
   };
 
   /**
