@@ -27,7 +27,9 @@
 #include <vefs/transport/level_set_gradient.h>
 #include <vefs/transport/mesh_adaptation.h>
 
+#include <algorithm>
 #include <iostream>
+#include <vector>
 
 using namespace dealii;
 
@@ -77,25 +79,24 @@ namespace
     vefs::SurfaceCells ahead;
   };
 
-  /** The lowest level of the cells where @p level_set changes sign. */
+  /**
+   * The lowest level of the cells that @p circle crosses: its signed
+   * distance, evaluated at their vertices, takes both signs.
+   */
   unsigned int
-  coarsest_cut_level(
-    const vefs::TransportedFields<2>                      &fields,
-    const typename vefs::TransportedFields<2>::VectorType &level_set)
+  coarsest_cut_level(const Triangulation<2> &triangulation,
+                     const Function<2>      &circle)
   {
-    constexpr unsigned int c = vefs::TransportedFields<2>::level_set_component;
-    unsigned int           coarsest = numbers::invalid_unsigned_int;
-    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+    unsigned int coarsest = numbers::invalid_unsigned_int;
+    for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          bool inside = false, outside = false;
+          std::vector<double> psi;
           for (const unsigned int v : cell->vertex_indices())
-            {
-              const double psi = level_set(cell->vertex_dof_index(v, c));
-              inside |= psi < 0;
-              outside |= psi > 0;
-            }
-          if (inside && outside)
+            psi.push_back(circle.value(cell->vertex(v)));
+          const auto [lowest, highest] =
+            std::minmax_element(psi.begin(), psi.end());
+          if (*lowest < 0 && *highest > 0)
             coarsest =
               std::min(coarsest, static_cast<unsigned int>(cell->level()));
         }
@@ -145,8 +146,9 @@ namespace
 
     vefs::CoarsenedDetail<2> coarsened_detail;
     Outcome                  outcome;
-    outcome.coarsest_level = coarsest_cut_level(fields, surface_ahead);
-    outcome.changes        = vefs::refine_ahead_of_surface(triangulation,
+    outcome.coarsest_level =
+      coarsest_cut_level(triangulation, Circle(ahead_centre));
+    outcome.changes = vefs::refine_ahead_of_surface(triangulation,
                                                     fields,
                                                     gradient,
                                                     levels,
