@@ -139,8 +139,7 @@ namespace
         vefs::adapt_mesh(triangulation, fields, &gradient, levels, 1, linear);
       }
     fields.interpolate(Circle(ahead_centre), velocity);
-    typename vefs::TransportedFields<2>::VectorType surface_ahead =
-      fields.vector();
+    vefs::TransportedFields<2>::VectorType surface_ahead = fields.vector();
     fields.interpolate(Circle(present_centre), velocity);
     gradient.reinit(fields);
 
