@@ -3,7 +3,8 @@
 height, contact force and contact length, and the kinetic, potential and
 elastic energies with their sum, against time; with 'Postprocess/Energy
 budget' a fourth panel: what each stage of the steps added to the sum, summed
-from the start. 2D or 3D: the height is
+from the start (the potential change moved from the transport to the
+momentum step, whose contact reactions are drawn apart). 2D or 3D: the height is
 centroid_z and the contact area replaces the length when the statistics
 have those columns (a 3D run).
 
@@ -45,14 +46,38 @@ def main(output_dir, png):
     axes[2].set_ylabel("energy (J%s)" % per)
     axes[2].legend(fontsize=7)
     if budget:
+        # Each stage's own share: the body's fall moves the potential
+        # energy in the transport and gravity's work into the flow step, so
+        # the potential change goes from the one to the other; the stress
+        # update's share is a part of the flow step's.
+        falls = [0.0] + [b - a for a, b in zip(s["potential_energy"],
+                                               s["potential_energy"][1:])]
+        stress = s.get("energy_change_stress_update", [0.0] * len(t))
+        shares = {
+            "transport (less the potential change)":
+                [c - d for c, d in zip(s["energy_change_transport"], falls)],
+            "momentum step (with gravity's work)":
+                [c + d - u for c, d, u in zip(s["energy_change_flow"], falls,
+                                              stress)],
+            "extension": s["energy_change_extension"],
+        }
+        if "energy_change_stress_update" in s:
+            shares["stress update"] = stress
         scheme = [0.0] * len(t)
-        for stage in ["transport", "flow", "extension"]:
+        for label, changes in shares.items():
             added, running = [], 0.0
-            for i, change in enumerate(s["energy_change_" + stage]):
+            for i, change in enumerate(changes):
                 running += change if i > 0 else 0.0
                 added.append(running)
                 scheme[i] += running
-            axes[3].plot(t, added, label=stage)
+            axes[3].plot(t, added, label=label)
+        if "energy_change_contact" in s:
+            added, running = [], 0.0
+            for i, change in enumerate(s["energy_change_contact"]):
+                running += change if i > 0 else 0.0
+                added.append(running)
+            axes[3].plot(t, added, "C1--",
+                         label="of the momentum step: contact reactions")
         axes[3].plot(t, scheme, "k", label="all stages: the scheme's")
         axes[3].set_ylabel("energy added since t = 0 (J%s)" % per)
         axes[3].legend(fontsize=7)

@@ -82,6 +82,7 @@ namespace vefs
     wall_unknowns.clear();
     any_wall_unknowns = false;
     in_contact.reinit(owned, relevant, comm);
+    reactions.reinit(owned, comm);
     this->touched = touched;
     if (walls.empty())
       return;
@@ -116,6 +117,19 @@ namespace vefs
         in_contact(entry.first) =
           released.count(coordinates(entry.second.node)) > 0 ? 0 : 1;
     in_contact.update_ghost_values();
+  }
+
+  template <int dim>
+  double
+  ContactWalls<dim>::power(
+    const std::function<double(types::global_dof_index)> &velocity) const
+  {
+    double power = 0;
+    for (const auto &[dof, unknown] : wall_unknowns)
+      if (in_contact.locally_owned_elements().is_element(dof) &&
+          in_contact(dof) == 1)
+        power += reactions(dof) * velocity(dof);
+    return Utilities::MPI::sum(power, in_contact.get_mpi_communicator());
   }
 
   template <int dim>
@@ -311,6 +325,9 @@ namespace vefs
         }
     in_contact.update_ghost_values();
     force = Utilities::MPI::sum(force, comm);
+    for (const auto &[dof, unknown] : wall_unknowns)
+      if (reactions.locally_owned_elements().is_element(dof))
+        reactions(dof) = reaction(dof);
 
     released_nodes.clear();
     for (const auto &entry : wall_unknowns)

@@ -64,6 +64,15 @@ namespace vefs
         statistics.add_column("energy_change_extension", [](const auto &s) {
           return s.energy_change_extension;
         });
+        if (flow.has_contact_walls())
+          statistics.add_column("energy_change_contact", [](const auto &s) {
+            return s.energy_change_contact;
+          });
+        if (budgets_stress_update())
+          statistics.add_column("energy_change_stress_update",
+                                [](const auto &s) {
+                                  return s.energy_change_stress_update;
+                                });
       }
     if (flow.has_contact_walls())
       {
@@ -95,17 +104,24 @@ namespace vefs
         initial_contact_reaction = flow.contact_force();
       }
     if (parameters.energy_budget)
-      last_energy = energy(fields, domain);
+      last_energy = energy(fields, domain).total();
   }
 
   template <int dim>
-  double
+  MechanicalEnergy
   FlowVelocity<dim>::energy(const TransportedFields<dim> &fields,
                             const LiquidDomain<dim>      &domain) const
   {
     TimerOutput::Scope scope(timer, "energy budget");
-    return mechanical_energy(fields, domain, parameters.material, rheology)
-      .total();
+    return mechanical_energy(fields, domain, parameters.material, rheology);
+  }
+
+  template <int dim>
+  bool
+  FlowVelocity<dim>::budgets_stress_update() const
+  {
+    return parameters.energy_budget && rheology.has_stress() &&
+           !parameters.material.has_dumbbells();
   }
 
   template <int dim>
@@ -224,7 +240,7 @@ namespace vefs
       }
     if (parameters.energy_budget)
       {
-        const double advected              = energy(fields, domain);
+        const double advected              = energy(fields, domain).total();
         statistics.energy_change_transport = advected - last_energy;
         last_energy                        = advected;
       }
@@ -233,6 +249,14 @@ namespace vefs
       flow.setup(domain, time.time() + time.tau());
     }
     statistics.linear_iterations = solve_step(fields, time.tau());
+    if (parameters.energy_budget && flow.has_contact_walls())
+      {
+        // The fields still hold u*, the solution u.
+        TimerOutput::Scope scope(timer, "energy budget");
+        statistics.energy_change_contact = time.tau() *
+                                           parameters.new_force_weight() *
+                                           flow.contact_power(fields);
+      }
     update_fields(fields,
                   domain,
                   time.tau(),
@@ -241,7 +265,7 @@ namespace vefs
                   statistics);
     if (parameters.energy_budget)
       {
-        const double extended              = energy(fields, domain);
+        const double extended              = energy(fields, domain).total();
         statistics.energy_change_extension = extended - last_energy;
         last_energy                        = extended;
       }
@@ -317,7 +341,8 @@ namespace vefs
     // With 'Stress theta' < 1 the stress law sees theta u + (1 - theta) u*,
     // and the second-order scheme's acceleration needs u* and a*: keep them
     // before the new velocity replaces them.
-    const double theta = rheology.implicit_weight();
+    const double theta                    = rheology.implicit_weight();
+    double       pointwise_elastic_energy = 0;
     typename TransportedFields<dim>::VectorType blended_velocity;
     if ((rheology.has_stress() && theta < 1) || fields.has_acceleration())
       fields.copy_to(blended_velocity);
@@ -330,6 +355,18 @@ namespace vefs
         // The update reads the velocity components of the vector and writes
         // the stress components of the fields.
         fields.blend_velocity_into(blended_velocity, theta);
+        if (budgets_stress_update())
+          {
+            // What the flow step did work against is the stress at its
+            // quadrature points: the reference for the nodal update.
+            TimerOutput::Scope scope(timer, "energy budget");
+            pointwise_elastic_energy =
+              elastic_energy_of_pointwise_update(fields,
+                                                 blended_velocity,
+                                                 domain,
+                                                 rheology,
+                                                 tau);
+          }
         const StressUpdateReport report =
           parameters.material.has_dumbbells()
             ? update_dumbbells(
@@ -352,9 +389,12 @@ namespace vefs
       }
     if (parameters.energy_budget)
       {
-        const double updated          = energy(fields, domain);
-        statistics.energy_change_flow = updated - last_energy;
-        last_energy                   = updated;
+        const MechanicalEnergy updated = energy(fields, domain);
+        statistics.energy_change_flow  = updated.total() - last_energy;
+        if (budgets_stress_update())
+          statistics.energy_change_stress_update =
+            updated.elastic - pointwise_elastic_energy;
+        last_energy = updated.total();
       }
     const unsigned int layers =
       std::max<unsigned int>(parameters.flow.extension_layers,

@@ -838,6 +838,36 @@ namespace vefs
   }
 
   template <int dim>
+  double
+  StokesStep<dim>::contact_power(const TransportedFields<dim> &fields) const
+  {
+    if (contact.empty())
+      return 0;
+    // The owned wall unknowns lie on owned cells at the boundary.
+    std::map<types::global_dof_index, double> mid_velocity;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary() &&
+          cell->active_fe_index() == liquid_index)
+        {
+          const auto transport_cell = fields.cell_of(cell);
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const Tensor<1, dim> advected =
+                fields.velocity_at(transport_cell, v);
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const auto dof = cell->vertex_dof_index(v, d, liquid_index);
+                  mid_velocity[dof] = 0.5 * (solution(dof) + advected[d]);
+                }
+            }
+        }
+    return contact.power([&](const types::global_dof_index dof) {
+      const auto entry = mid_velocity.find(dof);
+      return entry == mid_velocity.end() ? 0. : entry->second;
+    });
+  }
+
+  template <int dim>
   void
   StokesStep<dim>::copy_velocity_to(
     TransportedFields<dim>                      &fields,

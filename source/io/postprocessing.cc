@@ -80,7 +80,12 @@ namespace vefs
         "energy_change_extension (the velocity and stress beyond the "
         "liquid, which reach into the cut cells). Without viscosity, "
         "moving walls or open walls, their sum is the energy the scheme "
-        "adds or removes. Costs three integrals over the liquid per step.",
+        "adds or removes. Parts of energy_change_flow: with contact walls "
+        "energy_change_contact, the work of their new reactions over the "
+        "step; with a stress energy_change_stress_update, what the stress "
+        "update at the nodes adds beyond the same update at the flow "
+        "step's quadrature points. Costs three integrals over the liquid "
+        "per step, four with a stress.",
         Patterns::Bool());
     }
     prm.leave_subsection();

@@ -290,6 +290,48 @@ namespace vefs
   }
 
   template <int dim>
+  double
+  elastic_energy_of_pointwise_update(
+    const TransportedFields<dim>                      &fields,
+    const typename TransportedFields<dim>::VectorType &velocity,
+    const LiquidDomain<dim>                           &domain,
+    const Rheology<dim>                               &rheology,
+    const double                                       tau)
+  {
+    LiquidValues<dim> liquid_values(domain);
+    std::array<SymmetricTensor<2, dim>, GeometryInfo<dim>::vertices_per_cell>
+      vertex_sigma;
+    std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
+    double                                                           energy = 0;
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && domain.has_liquid(cell))
+        {
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              vertex_sigma[v] = fields.stress_at(cell, v);
+              for (unsigned int d = 0; d < dim; ++d)
+                vertex_u[v][d] = velocity(cell->vertex_dof_index(v, d));
+            }
+          const BoxCellValues<dim> &values = liquid_values.reinit(cell);
+          for (unsigned int q = 0; q < values.size(); ++q)
+            {
+              Tensor<2, dim> L;
+              for (const unsigned int v : cell->vertex_indices())
+                for (unsigned int d = 0; d < dim; ++d)
+                  L[d] += vertex_u[v][d] * values.gradient[q][v];
+              const SymmetricTensor<2, dim> sigma =
+                rheology.updated_stress(values.value(vertex_sigma, q),
+                                        traceless(L),
+                                        tau);
+              energy += rheology.elastic_energy_density(sigma) * values.JxW[q];
+            }
+        }
+    return Utilities::MPI::sum(
+      energy,
+      fields.dof_handler.get_triangulation().get_communicator());
+  }
+
+  template <int dim>
   StressMeasure
   measure_stress(const TransportedFields<dim> &fields,
                  const LiquidDomain<dim>      &domain,
@@ -386,4 +428,18 @@ namespace vefs
   measure_stress<3>(const TransportedFields<3> &,
                     const LiquidDomain<3> &,
                     const Rheology<3> &);
+  template double
+  elastic_energy_of_pointwise_update<2>(
+    const TransportedFields<2> &,
+    const TransportedFields<2>::VectorType &,
+    const LiquidDomain<2> &,
+    const Rheology<2> &,
+    const double);
+  template double
+  elastic_energy_of_pointwise_update<3>(
+    const TransportedFields<3> &,
+    const TransportedFields<3>::VectorType &,
+    const LiquidDomain<3> &,
+    const Rheology<3> &,
+    const double);
 } // namespace vefs

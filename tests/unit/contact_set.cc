@@ -8,12 +8,14 @@
 // every one of the right block pulls away (is released, and its velocity
 // then leaves the wall, u_y > 0). The contact length is then exactly the
 // floor faces of the left block's liquid cells; the floor pushes the
-// left block up (force > 0). The set's state for a checkpoint
+// left block up (force > 0), and its power at the mid-step velocity
+// (u + u*)/2 = (0, -1/2) of the nodes in contact is -force / 2. The set's
+// state for a checkpoint
 // (StokesStep::contact_state()) holds the released nodes, from which a
 // resumed step starts settled. 1 and 2 ranks.
 // Tolerance: |u_y| below 1e-6 in contact (solver tolerance 1e-10 on a
 // velocity of order 1, the contact rows are identities), u_y above 0.1
-// where released.
+// where released; the power within 1e-5 of the force (|u_y| in contact).
 
 #include "unit_test.h"
 
@@ -157,6 +159,14 @@ namespace
                            1e-12);
     out << "contact force positive: "
         << (flow.contact_force() > 0 ? "yes" : "no") << '\n';
+    // The energy budget's work of the walls: at the unknowns in contact u = 0
+    // and u* = (0, -1), so the power at (u + u*)/2 is -force / 2.
+    unit_test::check_below(out,
+                           "contact power + force / 2, relative to the force",
+                           std::abs(flow.contact_power(fields) +
+                                    0.5 * flow.contact_force()) /
+                             flow.contact_force(),
+                           1e-5);
 
     // The state a checkpoint keeps: the released nodes, those of the right
     // block's wet floor. A flow step resumed from it starts with the settled

@@ -13,7 +13,10 @@
 // - update_stress() on a mesh with hanging nodes cut by a plane, in the
 //   same simple shear: every node of a liquid cell gets sigma of one step
 //   of the exponential update from the advected sigma*, the others keep
-//   sigma*. 1 and 2 ranks.
+//   sigma*; elastic_energy_of_pointwise_update() gives the liquid's
+//   strain energy of that sigma, G/2 (tr B - 2 - ln det B) times its area,
+//   and so does the nodal update (its own share of the energy budget is
+//   zero in a homogeneous flow). 1 and 2 ranks.
 // Tolerance: relative error below 1e-12 (round-off of a few tens of
 // operations per step).
 
@@ -170,6 +173,12 @@ namespace
     const vefs::LiquidDomain<2> domain(fields);
     const vefs::Rheology<2>     elastic(
       material(0, vefs::StressUpdate::exponential));
+    const double pointwise_energy =
+      vefs::elastic_energy_of_pointwise_update(fields,
+                                               fields.vector(),
+                                               domain,
+                                               elastic,
+                                               tau);
     const auto report =
       vefs::update_stress(fields, fields.vector(), domain, elastic, tau, true);
 
@@ -222,6 +231,27 @@ namespace
     unit_test::check_below(out,
                            "largest velocity gradient - gdot",
                            std::abs(report.max_velocity_gradient - rate),
+                           1e-12);
+
+    // The energy budget's reference: in a homogeneous shear the update at
+    // the quadrature points is the nodal one, and the liquid (x < 0.53,
+    // height 1) holds G/2 (tr B - 2 - ln det B) of the updated B.
+    const SymmetricTensor<2, 2> B_updated =
+      unit_symmetric_tensor<2>() + updated / G;
+    const double exact_energy =
+      0.53 * 0.5 * G *
+      (trace(B_updated) - 2 - std::log(determinant(B_updated)));
+    unit_test::check_below(
+      out,
+      "elastic energy of the pointwise update, relative error",
+      std::abs(pointwise_energy - exact_energy) / exact_energy,
+      1e-12);
+    const double nodal_energy =
+      vefs::measure_stress(fields, domain, elastic).elastic_energy;
+    unit_test::check_below(out,
+                           "the nodal update's own share, relative",
+                           std::abs(nodal_energy - pointwise_energy) /
+                             exact_energy,
                            1e-12);
   }
 } // namespace

@@ -92,6 +92,22 @@ namespace vefs
     double energy_change_flow      = 0;
     double energy_change_extension = 0;
     /**
+     * Of energy_change_flow, what the stress update at the nodes adds
+     * beyond the same update at the flow step's quadrature points
+     * (elastic_energy_of_pointwise_update()): the update's own share; the
+     * rest of energy_change_flow is the momentum equation's, with the work
+     * of gravity. Only with a macroscopic stress.
+     */
+    double energy_change_stress_update = 0;
+    /**
+     * Of energy_change_flow, the work of the contact walls' new reactions
+     * on the liquid over the step, tau w R^{n+1} . (u + u*)/2 at the
+     * unknowns in contact (w the weight of the new forces; the old
+     * reactions act through the carried acceleration): what the walls take
+     * from the liquid they stop. Only with contact walls.
+     */
+    double energy_change_contact = 0;
+    /**
      * Only with a stress: c tau / h, how many of the finest cells an
      * elastic shear wave (speed c = sqrt(G / rho)) crosses in the step.
      */

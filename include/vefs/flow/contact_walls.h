@@ -12,6 +12,7 @@
 #include <vefs/flow/ghost_penalty.h>
 #include <vefs/flow/stokes_cell_system.h>
 
+#include <functional>
 #include <map>
 
 namespace vefs
@@ -130,6 +131,15 @@ namespace vefs
     void
     resume(const std::vector<Point<dim>> &released);
 
+    /**
+     * The power of the reactions of the last update() on the liquid: the
+     * sum over the unknowns in contact of the reaction (the force on the
+     * liquid in the unknown's direction) times @p velocity of the unknown
+     * (W, W/m in 2D). Collective.
+     */
+    double
+    power(const std::function<double(types::global_dof_index)> &velocity) const;
+
     /** Normal force of the walls on the liquid (N, N/m in 2D), >= 0. */
     double force = 0;
     /** Length (2D) or area (3D) of the wall in contact with the liquid. */
@@ -173,6 +183,8 @@ namespace vefs
 
     /** 1 for a degree of freedom in contact, 0 otherwise; ghosted. */
     Vector in_contact;
+    /** The reactions of the last update(), at the owned unknowns. */
+    Vector reactions;
     /** The velocity unknowns this rank writes reactions into. */
     IndexSet touched;
     /** Nodes of owned degrees of freedom released by the last update(). */

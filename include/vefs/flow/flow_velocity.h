@@ -123,10 +123,19 @@ namespace vefs
     add_acceleration_to_velocity(TransportedFields<dim> &fields,
                                  const double            factor) const;
 
-    /** The energy of @p fields on @p domain (the energy budget's). */
-    double
+    /** The energies of @p fields on @p domain (the energy budget's). */
+    MechanicalEnergy
     energy(const TransportedFields<dim> &fields,
            const LiquidDomain<dim>      &domain) const;
+
+    /**
+     * Whether the energy budget splits off the stress update's own share
+     * (energy_change_stress_update): with a macroscopic stress, whose
+     * update elastic_energy_of_pointwise_update() repeats at the
+     * quadrature points.
+     */
+    bool
+    budgets_stress_update() const;
 
     const FlowStepParameters parameters;
     const Rheology<dim>     &rheology;

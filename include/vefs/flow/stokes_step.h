@@ -105,6 +105,15 @@ namespace vefs
       return contact.force;
     }
 
+    /**
+     * The power of the contact walls' reactions of the last contact update
+     * on the liquid, at the mid-step velocity (u + u*)/2 of the unknowns in
+     * contact (u* the advected velocity that @p fields hold during the
+     * solve; u = 0 there): W, W/m in 2D. Collective.
+     */
+    double
+    contact_power(const TransportedFields<dim> &fields) const;
+
     /** ContactWalls::saved_state(), for a checkpoint. Collective. */
     std::vector<Point<dim>>
     contact_state() const

@@ -106,6 +106,24 @@ namespace vefs
   measure_stress(const TransportedFields<dim> &fields,
                  const LiquidDomain<dim>      &domain,
                  const Rheology<dim>          &rheology);
+  /**
+   * The elastic energy the liquid would hold if the stress were updated at
+   * the quadrature points of its cells (the points where the flow step
+   * integrates the stress it does work against) instead of at the nodes:
+   * sigma* interpolated from the nodes that @p fields holds, L the
+   * traceless Q1 gradient of @p velocity there, Rheology::updated_stress().
+   * The elastic energy after update_stress() less this one is what the
+   * nodal update itself adds to the energy (the energy budget's column
+   * energy_change_stress_update, doc/bouncing_ball.md). Collective.
+   */
+  template <int dim>
+  double
+  elastic_energy_of_pointwise_update(
+    const TransportedFields<dim>                      &fields,
+    const typename TransportedFields<dim>::VectorType &velocity,
+    const LiquidDomain<dim>                           &domain,
+    const Rheology<dim>                               &rheology,
+    const double                                       tau);
 } // namespace vefs
 
 #endif
