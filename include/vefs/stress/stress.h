@@ -106,6 +106,7 @@ namespace vefs
   measure_stress(const TransportedFields<dim> &fields,
                  const LiquidDomain<dim>      &domain,
                  const Rheology<dim>          &rheology);
+
   /**
    * The elastic energy the liquid would hold if the stress were updated at
    * the quadrature points of its cells (the points where the flow step
