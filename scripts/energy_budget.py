@@ -24,9 +24,8 @@ HEADINGS = {
 }
 
 
-def phases(directory):
-    """(name, t_from, t_to) of the phases of the run."""
-    s = read_statistics(directory)
+def phases(s):
+    """(name, t_from, t_to) of the phases of the run with statistics @p s."""
     t, force = s["time"], s["contact_force"]
     n = len(t)
     first = next((i for i in range(n) if force[i] > 0), None)
@@ -48,11 +47,11 @@ def main(directory):
     print("| phase | " + " | ".join(HEADINGS[k] for k in SHARES) +
           " | sum: the scheme's |")
     print("|---" * (len(SHARES) + 2) + "|")
-    rows = phases(directory)
     s = read_statistics(directory)
+    rows = phases(s)
     rows.append(("whole run", s["time"][0], s["time"][-1]))
     for name, t_from, t_to in rows:
-        budget = energy_budget(directory, t_from, t_to)
+        budget = energy_budget(directory, t_from, t_to, s)
         shares = budget["shares"]
         total = sum(budget[stage] for stage in ["transport", "flow",
                                                 "extension"])

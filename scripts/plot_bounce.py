@@ -14,6 +14,7 @@ import sys
 
 import matplotlib
 
+from vefs_tools.energy_budget import step_shares
 from vefs_tools.statistics import read_statistics
 
 matplotlib.use("Agg")
@@ -46,38 +47,27 @@ def main(output_dir, png):
     axes[2].set_ylabel("energy (J%s)" % per)
     axes[2].legend(fontsize=7)
     if budget:
-        # Each stage's own share: the body's fall moves the potential
-        # energy in the transport and gravity's work into the flow step, so
-        # the potential change goes from the one to the other; the stress
-        # update's share is a part of the flow step's.
-        falls = [0.0] + [b - a for a, b in zip(s["potential_energy"],
-                                               s["potential_energy"][1:])]
-        stress = s.get("energy_change_stress_update", [0.0] * len(t))
-        shares = {
-            "transport (less the potential change)":
-                [c - d for c, d in zip(s["energy_change_transport"], falls)],
-            "momentum step (with gravity's work)":
-                [c + d - u for c, d, u in zip(s["energy_change_flow"], falls,
-                                              stress)],
-            "extension": s["energy_change_extension"],
+        # Each stage's own share; the contact reactions are a part of the
+        # momentum step's, drawn apart.
+        labels = {
+            "transport": "transport (less the potential change)",
+            "momentum": "momentum step (with gravity's work)",
+            "extension": "extension",
+            "stress_update": "stress update",
+            "contact": "of the momentum step: contact reactions",
         }
-        if "energy_change_stress_update" in s:
-            shares["stress update"] = stress
         scheme = [0.0] * len(t)
-        for label, changes in shares.items():
+        for name, changes in step_shares(s).items():
+            if changes is None:
+                continue
             added, running = [], 0.0
-            for i, change in enumerate(changes):
-                running += change if i > 0 else 0.0
+            for change in changes:
+                running += change
                 added.append(running)
-                scheme[i] += running
-            axes[3].plot(t, added, label=label)
-        if "energy_change_contact" in s:
-            added, running = [], 0.0
-            for i, change in enumerate(s["energy_change_contact"]):
-                running += change if i > 0 else 0.0
-                added.append(running)
-            axes[3].plot(t, added, "C1--",
-                         label="of the momentum step: contact reactions")
+            if name != "contact":
+                scheme = [a + b for a, b in zip(scheme, added)]
+            axes[3].plot(t, added, "C1--" if name == "contact" else "-",
+                         label=labels[name])
         axes[3].plot(t, scheme, "k", label="all stages: the scheme's")
         axes[3].set_ylabel("energy added since t = 0 (J%s)" % per)
         axes[3].legend(fontsize=7)

@@ -16,17 +16,41 @@ STAGES = ["transport", "flow", "extension"]
 SHARES = ["transport", "momentum", "contact", "stress_update", "extension"]
 
 
-def energy_budget(directory, t_from=None, t_to=None):
+def step_shares(s):
+    """Each stage's own share (SHARES) in every step of the statistics @p s
+    (read_statistics()): lists by row, the first row's zero; None for a
+    column the run does not write."""
+    n = len(s["time"])
+    falls = [0.0] + [b - a for a, b in zip(s["potential_energy"],
+                                           s["potential_energy"][1:])]
+
+    def column(name):
+        return [0.0] + list(s[name][1:]) if name in s else None
+
+    stress_update = column("energy_change_stress_update")
+    flow = column("energy_change_flow")
+    return {
+        "transport": [c - d for c, d in zip(
+            column("energy_change_transport"), falls)],
+        "momentum": [flow[i] + falls[i] -
+                     (stress_update[i] if stress_update else 0.0)
+                     for i in range(n)],
+        "contact": column("energy_change_contact"),
+        "stress_update": stress_update,
+        "extension": column("energy_change_extension"),
+    }
+
+
+def energy_budget(directory, t_from=None, t_to=None, statistics=None):
     """A dict with, over the steps ending in (t_from, t_to]: the sum of each
     stage's column ("transport", "flow", "extension"), "change" (the change
     of the total energy from the row at t_from to the row at t_to),
     "initial" (the total energy of the first row) and "closure" (the largest
     |sum of the stages of a step - change of the total in that step| over
-    the interval, the bookkeeping error), "shares" (a dict of each stage's
-    own share, SHARES: the transport less the potential change, the
-    momentum step with it, of which the contact walls' work, the stress
-    update, the extension; None where the run has no such column)."""
-    s = read_statistics(directory)
+    the interval, the bookkeeping error), "shares" (the sums of
+    step_shares(); None where the run has no such column). @p statistics:
+    the run's, if already read."""
+    s = read_statistics(directory) if statistics is None else statistics
     t = s["time"]
     total = [k + p + e for k, p, e in zip(s["kinetic_energy"],
                                           s["potential_energy"],
@@ -47,17 +71,7 @@ def energy_budget(directory, t_from=None, t_to=None):
     budget["change"] = total[last] - total[first]
     budget["initial"] = total[0]
     budget["closure"] = closure
-    potential = s["potential_energy"][last] - s["potential_energy"][first]
-
-    def part(column):
-        return sum(s[column][first + 1:last + 1]) if column in s else None
-
-    stress_update = part("energy_change_stress_update")
     budget["shares"] = {
-        "transport": budget["transport"] - potential,
-        "momentum": budget["flow"] - (stress_update or 0.0) + potential,
-        "contact": part("energy_change_contact"),
-        "stress_update": stress_update,
-        "extension": budget["extension"],
-    }
+        name: None if share is None else sum(share[first + 1:last + 1])
+        for name, share in step_shares(s).items()}
     return budget
