@@ -295,7 +295,7 @@ main()
   }
 
   {
-    // 'Velocity interpolation = automatic': limited cubic for an elastic
+    // 'Velocity interpolation = automatic': cubic for an elastic
     // solid with the macroscopic stress, the second-order scheme and a
     // weight strain rho |g| L / (3 G) in (0, 1), L the cavity's largest
     // extent, unless the band is placed in one change; linear otherwise.

@@ -61,7 +61,7 @@ namespace vefs
     std::string exact_final_level_set = "";
 
     /**
-     * 'automatic' velocity interpolation becomes limited cubic for a stiff
+     * 'automatic' velocity interpolation becomes cubic for a stiff
      * elastic solid under gravity (@p stiff_solid: the rule of
      * Parameters::resolve_automatic_entries()) unless @p band_in_one_change
      * (that placement keeps Q1 fields only), linear otherwise: linear
