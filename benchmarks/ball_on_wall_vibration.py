@@ -33,7 +33,7 @@ import os
 
 from vefs_tools import REPO_ROOT as ROOT
 from vefs_tools.prm import apply_settings, set_entry
-from vefs_tools.run import run_serial_scene
+from vefs_tools.run import add_study_arguments, run_serial_scene
 from vefs_tools.statistics import read_statistics
 
 # Cavity (lower, upper corner, coarse cells of 0.1 m) and ball centre.
@@ -73,16 +73,9 @@ def energy_lost(statistics):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--vefs", default=os.path.join(ROOT, "build", "vefs"))
     parser.add_argument("--levels", type=int, nargs="+", default=[4, 5, 6])
-    parser.add_argument("--results-dir", default=os.path.join(
-        ROOT, "benchmarks", "results", "ball_on_wall"))
-    parser.add_argument("--output", default=os.path.join(
-        ROOT, "benchmarks", "results", "ball_on_wall_vibration.md"))
-    parser.add_argument("--no-run", action="store_true")
-    parser.add_argument("--set", action="append", default=[],
-                        metavar="SECTION/ENTRY=VALUE",
-                        help="change an entry in every run")
+    add_study_arguments(parser, "ball_on_wall",
+                        "ball_on_wall_vibration.md")
     args = parser.parse_args()
 
     os.makedirs(args.results_dir, exist_ok=True)

@@ -21,7 +21,7 @@ import sys
 
 from vefs_tools import REPO_ROOT as ROOT
 from vefs_tools.prm import apply_settings, set_entry
-from vefs_tools.run import run_vefs, vefs_command
+from vefs_tools.run import add_study_arguments, run_vefs, vefs_command
 from vefs_tools.statistics import read_statistics
 
 
@@ -59,18 +59,11 @@ def summary(directory):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--vefs", default=os.path.join(ROOT, "build", "vefs"))
     parser.add_argument("--levels", type=int, nargs="+", default=[2, 3, 4])
     parser.add_argument("--np", type=int, default=2)
     parser.add_argument("--end-time", type=float, default=0.3)
-    parser.add_argument("--results-dir", default=os.path.join(
-        ROOT, "benchmarks", "results", "bouncing_ball_3d"))
-    parser.add_argument("--output", default=os.path.join(
-        ROOT, "benchmarks", "results", "bouncing_ball_3d_study.md"))
-    parser.add_argument("--no-run", action="store_true")
-    parser.add_argument("--set", action="append", default=[],
-                        metavar="SECTION/ENTRY=VALUE",
-                        help="change an entry of the scene in every run")
+    add_study_arguments(parser, "bouncing_ball_3d",
+                        "bouncing_ball_3d_study.md")
     args = parser.parse_args()
 
     os.makedirs(args.results_dir, exist_ok=True)

@@ -24,7 +24,7 @@ import os
 from vefs_tools import REPO_ROOT as ROOT
 from vefs_tools.bounce import bounce_events
 from vefs_tools.prm import apply_settings, set_entry
-from vefs_tools.run import run_serial_scene
+from vefs_tools.run import add_study_arguments, run_serial_scene
 from vefs_tools.statistics import read_statistics
 
 
@@ -49,19 +49,12 @@ def ms(x):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--vefs", default=os.path.join(ROOT, "build", "vefs"))
     parser.add_argument("--levels", type=int, nargs="+", default=[4, 5, 6])
     parser.add_argument("--time-steps", type=float, nargs="+",
                         default=[0.002, 0.001])
     parser.add_argument("--end-time", type=float, default=0.45)
-    parser.add_argument("--results-dir", default=os.path.join(
-        ROOT, "benchmarks", "results", "bouncing_ball_2d_stiff"))
-    parser.add_argument("--output", default=os.path.join(
-        ROOT, "benchmarks", "results", "bouncing_ball_study.md"))
-    parser.add_argument("--no-run", action="store_true")
-    parser.add_argument("--set", action="append", default=[],
-                        metavar="SECTION/ENTRY=VALUE",
-                        help="change an entry of the scene in every run")
+    add_study_arguments(parser, "bouncing_ball_2d_stiff",
+                        "bouncing_ball_study.md")
     args = parser.parse_args()
 
     os.makedirs(args.results_dir, exist_ok=True)

@@ -160,6 +160,23 @@ def run_vefs(cmd, log_file, timeout=None):
                usage.ru_maxrss / 1024.0, timed_out)
 
 
+def add_study_arguments(parser, results, output):
+    """The options a study of one scene shares with the others: --vefs,
+    --results-dir (default benchmarks/results/<results>), --output (default
+    benchmarks/results/<output>), --no-run (only analyse the runs there) and
+    --set SECTION/ENTRY=VALUE (repeatable)."""
+    parser.add_argument("--vefs", default=os.path.join(REPO_ROOT, "build",
+                                                       "vefs"))
+    parser.add_argument("--results-dir", default=os.path.join(
+        REPO_ROOT, "benchmarks", "results", results))
+    parser.add_argument("--output", default=os.path.join(
+        REPO_ROOT, "benchmarks", "results", output))
+    parser.add_argument("--no-run", action="store_true")
+    parser.add_argument("--set", action="append", default=[],
+                        metavar="SECTION/ENTRY=VALUE",
+                        help="change an entry of the scene in every run")
+
+
 def run_serial_scene(vefs, results, name, prm_text):
     """Write <results>/<name>.prm, run vefs on it on one rank (log in
     <name>.log) and record the wall time and the git revision of the
