@@ -30,9 +30,11 @@ namespace vefs
                     "along the characteristics as well, Nave, Rosales & "
                     "Seibold 2010, with a four-stage trace of the feet; "
                     "9x smaller L1 error on the Rider-Kothe vortex at "
-                    "h = 1/128, CFL 5; the default stays linear because "
-                    "the broken dam tests' outputs change, within their "
-                    "bounds, see doc/transport.md).");
+                    "h = 1/128, CFL 5; the default stays linear: in the "
+                    "flows it keeps a falling drop's area and the dam's "
+                    "front as well or better, but the stiff ball loses "
+                    "more energy at its contact and the soft ball needs "
+                    "more steps, see doc/transport.md).");
       add_selection(
         prm,
         "Velocity interpolation",
