@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Where the 2D stiff ball's contact loss comes from: the ball of
 prm/bouncing_ball_2d_stiff.prm vibrating without gravity, free, as a half
-ball on a slip wall, and cut 5 mm by a slip wall, at three resolutions.
+ball on a slip wall, and cut by a slip wall, at three resolutions.
 
 Usage (from anywhere):
   /usr/bin/python3 benchmarks/ball_on_wall_vibration.py [--vefs build/vefs]
-      [--levels 4 5 6] [--results-dir benchmarks/results/ball_on_wall]
+      [--levels 4 5 6] [--cuts 5]
+      [--results-dir benchmarks/results/ball_on_wall]
       [--output benchmarks/results/ball_on_wall_vibration.md] [--no-run]
       [--set 'Solver/Ghost penalty=0.02' ...]
 
@@ -20,15 +21,17 @@ loss is the scheme's:
 - half ball: the same ball with the floor through its centre. The slip wall
   is the free ball's plane of symmetry: the half ball must lose what the
   free one does;
-- cut 5 mm: the ball centred 95 mm above the floor, which cuts a cap of
-  5 mm: liquid and floor meet at 18 degrees, with a thin wedge of air beside
-  the contact line, as when the falling ball meets the floor.
+- cut d mm (--cuts, 5 by default): the ball centred 100 - d mm above the
+  floor, which cuts a cap of d mm off: liquid and floor meet at acos(1 -
+  d / 100) (18 degrees for 5 mm), with a thin wedge of air beside the
+  contact line, as when the falling ball meets the floor.
 
 Each run is one rank, Maximum level = L (finest cells 0.1 m / 2^L),
 Bulk level = L - 1, to t = 0.6 s, without visualization output, in
 <results-dir>/<shape>_L<L>/.
 """
 import argparse
+import math
 import os
 
 from vefs_tools import REPO_ROOT as ROOT
@@ -36,12 +39,17 @@ from vefs_tools.prm import apply_settings, set_entry
 from vefs_tools.run import add_study_arguments, run_serial_scene
 from vefs_tools.statistics import read_statistics
 
-# Cavity (lower, upper corner, coarse cells of 0.1 m) and ball centre.
-SHAPES = [
-    ("free", "-0.2, -0.2", "0.2, 0.2", "4, 4", "0, 0"),
-    ("half ball", "-0.2, 0", "0.2, 0.2", "4, 2", "0, 0"),
-    ("cut 5 mm", "-0.2, 0", "0.2, 0.3", "4, 3", "0, 0.095"),
-]
+
+
+def shapes(cuts):
+    """Name, cavity (lower, upper corner, coarse cells of 0.1 m) and ball
+    centre of each run: the free ball, the half ball, and the ball cut by
+    the floor by each depth in `cuts` (mm)."""
+    return [("free", "-0.2, -0.2", "0.2, 0.2", "4, 4", "0, 0"),
+            ("half ball", "-0.2, 0", "0.2, 0.2", "4, 2", "0, 0")] + [
+        ("cut %g mm (%.0f degrees)" % (cut, math.degrees(
+            math.acos(1 - cut / 100))), "-0.2, 0", "0.2, 0.3", "4, 3",
+         "0, %g" % (0.1 - cut / 1000)) for cut in cuts]
 
 
 def make_prm(text, shape, level, output_dir, settings):
@@ -74,6 +82,8 @@ def energy_lost(statistics):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--levels", type=int, nargs="+", default=[4, 5, 6])
+    parser.add_argument("--cuts", type=float, nargs="+", default=[5],
+                        help="depths (mm) of the caps the floor cuts off")
     add_study_arguments(parser, "ball_on_wall",
                         "ball_on_wall_vibration.md")
     args = parser.parse_args()
@@ -82,9 +92,11 @@ def main():
     with open(os.path.join(ROOT, "prm", "bouncing_ball_2d_stiff.prm")) as f:
         base = f.read()
     lost = {}
-    for shape in SHAPES:
+    runs = shapes(args.cuts)
+    for shape in runs:
         for level in args.levels:
-            name = "%s_L%d" % (shape[0].replace(" ", "_"), level)
+            name = "%s_L%d" % (shape[0].split(" (")[0].replace(" ", "_"),
+                               level)
             out = os.path.join(args.results_dir, name)
             if not args.no_run:
                 text = make_prm(base, shape, level, out, args.set)
@@ -106,7 +118,7 @@ def main():
                                   for level in args.levels) + " |",
         "|---|" + "---|" * len(args.levels),
     ]
-    for shape in SHAPES:
+    for shape in runs:
         lines.append("| %s | " % shape[0] + " | ".join(
             "%.1f %%" % (100 * lost[shape[0], level])
             if (shape[0], level) in lost else "-"
