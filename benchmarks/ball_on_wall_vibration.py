@@ -36,7 +36,8 @@ import os
 
 from vefs_tools import REPO_ROOT as ROOT
 from vefs_tools.prm import apply_settings, set_entry
-from vefs_tools.run import add_study_arguments, run_serial_scene
+from vefs_tools.run import (add_study_arguments, run_serial_scene,
+                            write_report)
 from vefs_tools.statistics import read_statistics
 
 
@@ -124,9 +125,7 @@ def main():
             if (shape[0], level) in lost else "-"
             for level in args.levels) + " |")
     lines.append("")
-    with open(args.output, "w") as f:
-        f.write("\n".join(lines))
-    print("\n".join(lines))
+    write_report(args.output, lines)
 
 
 if __name__ == "__main__":

@@ -21,7 +21,8 @@ import sys
 
 from vefs_tools import REPO_ROOT as ROOT
 from vefs_tools.prm import apply_settings, set_entry
-from vefs_tools.run import add_study_arguments, run_vefs, vefs_command
+from vefs_tools.run import (add_study_arguments, run_vefs, vefs_command,
+                            write_report)
 from vefs_tools.statistics import read_statistics
 
 
@@ -121,9 +122,7 @@ def main():
                 1000 * r["lowest_centroid_time"], r["contact_force"],
                 1000 * r["contact_force_time"], r["energy_left"]))
     lines.append("")
-    with open(args.output, "w") as f:
-        f.write("\n".join(lines))
-    print("\n".join(lines))
+    write_report(args.output, lines)
 
 
 if __name__ == "__main__":

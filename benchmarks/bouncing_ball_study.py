@@ -24,7 +24,8 @@ import os
 from vefs_tools import REPO_ROOT as ROOT
 from vefs_tools.bounce import bounce_events
 from vefs_tools.prm import apply_settings, set_entry
-from vefs_tools.run import add_study_arguments, run_serial_scene
+from vefs_tools.run import (add_study_arguments, run_serial_scene,
+                            write_report)
 from vefs_tools.statistics import read_statistics
 
 
@@ -112,9 +113,7 @@ def main():
                 "%.1f %%" % (100 * e["contact_loss"]) if lift else "-",
                 e["max_volume_change"], wall))
     lines.append("")
-    with open(args.output, "w") as f:
-        f.write("\n".join(lines))
-    print("\n".join(lines))
+    write_report(args.output, lines)
 
 
 if __name__ == "__main__":

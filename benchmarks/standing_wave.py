@@ -24,7 +24,7 @@ import sys
 
 from vefs_tools import REPO_ROOT as ROOT
 from vefs_tools.prm import set_entry
-from vefs_tools.run import run_serial_scene
+from vefs_tools.run import run_serial_scene, write_report
 from vefs_tools.standing_wave import measure, exact_wave
 from vefs_tools.statistics import read_statistics
 
@@ -112,9 +112,7 @@ def main():
                  "explicit surface limits tau to about 2 (h / (pi g))^(1/2) "
                  "(doc/standing_wave.md).")
     lines.append("")
-    with open(args.output, "w") as f:
-        f.write("\n".join(lines))
-    print("\n".join(lines))
+    write_report(args.output, lines)
 
     try:
         import matplotlib

@@ -177,6 +177,14 @@ def add_study_arguments(parser, results, output):
                         help="change an entry of the scene in every run")
 
 
+def write_report(path, lines):
+    """Write a study's table (a list of lines) to `path` and print it."""
+    text = "\n".join(lines)
+    with open(path, "w") as f:
+        f.write(text)
+    print(text)
+
+
 def run_serial_scene(vefs, results, name, prm_text):
     """Write <results>/<name>.prm, run vefs on it on one rank (log in
     <name>.log) and record the wall time and the git revision of the
