@@ -175,7 +175,8 @@ namespace vefs
       time.second_order && strain > 0 && strain < 1;
     transport.resolve(mesh.band_predicted(),
                       mesh.band_in_one_change(),
-                      stiff_solid_under_gravity);
+                      stiff_solid_under_gravity,
+                      dimension);
     solver.resolve(stiff_solid_under_gravity);
     flow.resolve(regime, material.has_dumbbells());
   }

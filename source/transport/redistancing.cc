@@ -78,7 +78,8 @@ namespace vefs
   void
   redistance(TransportedFields<dim>     &fields,
              LevelSetGradient<dim>      &level_set_gradient,
-             const LevelSetInterpolation interpolation)
+             const LevelSetInterpolation interpolation,
+             const double                kept_distance)
   {
     FieldHermite<dim> hermite;
     const bool        cubic = interpolation != LevelSetInterpolation::linear;
@@ -207,7 +208,9 @@ namespace vefs
                    std::back_inserter(nearest));
         const Point<dim> &point    = all_crossings[nearest[0]];
         const double      distance = node.point.distance(point);
-        const double      sign     = fields.level_set(node) < 0 ? -1 : 1;
+        if (distance < kept_distance)
+          continue;
+        const double sign = fields.level_set(node) < 0 ? -1 : 1;
         fields.set_level_set(node, sign * distance);
         // The gradient of the distance, for the gradient-augmented
         // transport: the surface normal at the nearest crossing (the
@@ -226,9 +229,11 @@ namespace vefs
   template void
   redistance<2>(TransportedFields<2> &,
                 LevelSetGradient<2> &,
-                const LevelSetInterpolation);
+                const LevelSetInterpolation,
+                const double);
   template void
   redistance<3>(TransportedFields<3> &,
                 LevelSetGradient<3> &,
-                const LevelSetInterpolation);
+                const LevelSetInterpolation,
+                const double);
 } // namespace vefs

@@ -93,9 +93,14 @@ namespace vefs
       }
     if (remap && parameters.redistancing_interval > 0 &&
         time.step() % parameters.redistancing_interval == 0)
+      // Within 2R cells (R the remap distance) the characteristics of the
+      // next remaps read the level set; a distance has kinks inside thin
+      // filaments there (2D; doc/transport.md, "Redistancing from a distance
+      // function").
       redistance(fields,
                  level_set_gradient,
-                 parameters.level_set_interpolation);
+                 parameters.level_set_interpolation,
+                 parameters.kept_at_redistancing * levels.finest_cell_size);
     if (parameters.volume_correction)
       {
         const double shift = correct_volume(fields, volume_expected);

@@ -67,7 +67,7 @@ namespace
     vefs::TransportParameters parameters;
     parameters.level_set_interpolation = level_set;
     parameters.velocity_interpolation  = velocity;
-    parameters.resolve(false, false, false);
+    parameters.resolve(false, false, false, dim);
     const vefs::FootInterpolation interpolation(parameters, false, 1.);
     // The feet 0.03 away: a quarter to half of a cell.
     vefs::advect_along_characteristics(fields,

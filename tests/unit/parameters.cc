@@ -401,15 +401,25 @@ main()
   }
 
   {
-    // 'Remap distance = automatic': 10 for the gradient augmented level set
-    // carried by a prescribed velocity, unless the band is predicted; 0
-    // otherwise. 'Band width' and 'Band miss tolerance' = automatic: 2 and
-    // 0.001 with 'predicted, one change', 2 and 0 with 'predicted', 4 and 0
-    // with 'widened'. Explicit values stay.
+    // 'Remap distance = automatic': 20 in 2D and 10 in 3D for the gradient
+    // augmented level set carried by a prescribed velocity, unless the band
+    // is predicted; 0 otherwise. Redistancing keeps the level set within
+    // twice the remap distance in 2D, nowhere in 3D. 'Band width' and 'Band
+    // miss tolerance' = automatic: 2 and 0.001 with 'predicted, one change',
+    // 2 and 0 with 'predicted', 4 and 0 with 'widened'. Explicit values
+    // stay.
     const auto resolved = [](const std::string &transport,
-                             const std::string &mesh) {
+                             const std::string &mesh,
+                             const bool         three_d = false) {
+      const std::string cavity_3d =
+        "set Dimension = 3\nset Gravity = 0, 0, 0\nsubsection Cavity\n"
+        "  set Lower corner = 0, 0, 0\n  set Upper corner = 1, 1, 1\n"
+        "  set Coarse subdivisions = 1, 1, 1\nend\n"
+        "subsection Initial liquid\n  set Shape = ball\n"
+        "  set Ball center = 0.5, 0.5, 0.5\n  set Velocity = 0; 0; 0\nend\n";
       write("remap.prm",
-            "set Dimension = 2\nsubsection Transport\n" + transport +
+            (three_d ? cavity_3d : "set Dimension = 2\n") +
+              "subsection Transport\n" + transport +
               "end\nsubsection Mesh refinement\n" + mesh + "end\n");
       vefs::Parameters parameters;
       ParameterHandler prm;
@@ -420,8 +430,10 @@ main()
       parameters.check();
       std::ostringstream text;
       text << "remap distance " << parameters.transport.remap_distance
-           << ", band width " << parameters.mesh.band_width
-           << ", miss tolerance " << parameters.mesh.band_miss_tolerance;
+           << ", kept at redistancing "
+           << parameters.transport.kept_at_redistancing << ", band width "
+           << parameters.mesh.band_width << ", miss tolerance "
+           << parameters.mesh.band_miss_tolerance;
       return text.str();
     };
     const std::string gradient_augmented =
@@ -434,6 +446,12 @@ main()
         << resolved(prescribed, "") << '\n';
     out << "automatic, prescribed velocity, gradient augmented: "
         << resolved(prescribed + gradient_augmented, "") << '\n';
+    out << "the same, 3D: "
+        << resolved("  set Prescribed velocity = 1; 0; 0\n" +
+                      gradient_augmented,
+                    "",
+                    true)
+        << '\n';
     out << "the same, band predicted: "
         << resolved(prescribed + gradient_augmented,
                     "  set Band placement = predicted\n")

@@ -21,6 +21,10 @@
 //   crossing, which is the one at the smallest angle from the node seen from
 //   the centre: off the radial direction by at most t / R.
 // - No node changes sign.
+// - With a kept distance of 4h (the remap distance's reach, 2D, gradient
+//   augmented), the nodes within 3.5h of the surface keep their values to
+//   round-off (the nearest crossing is at most t farther than the surface),
+//   those beyond 4h hold r - R within the bound above.
 
 #include "unit_test.h"
 
@@ -39,7 +43,9 @@ namespace
 {
   template <int dim>
   void
-  check(std::ostream &out, const vefs::LevelSetInterpolation interpolation)
+  check(std::ostream                     &out,
+        const vefs::LevelSetInterpolation interpolation,
+        const unsigned int                kept_cells = 0)
   {
     const MPI_Comm                            comm = MPI_COMM_WORLD;
     parallel::distributed::Triangulation<dim> triangulation(comm);
@@ -66,11 +72,13 @@ namespace
     fields.finalize();
     level_set_gradient.finalize(fields);
 
-    vefs::redistance(fields, level_set_gradient, interpolation);
+    vefs::redistance(fields, level_set_gradient, interpolation, kept_cells * h);
 
     const bool   cubic = interpolation != vefs::LevelSetInterpolation::linear;
-    const double far   = (cubic ? 2 : 1) * std::sqrt(dim) * h;
-    const double t     = std::sqrt(dim) * h / 4;
+    const double far =
+      std::max<double>((cubic ? 2 : 1) * std::sqrt(dim) * h, kept_cells * h);
+    const double near        = std::max(h / 4, (kept_cells - 0.5) * h);
+    const double t           = std::sqrt(dim) * h / 4;
     double       near_change = 0, distance_error = 0, gradient_error = 0;
     unsigned int sign_changes = 0, far_nodes = 0;
     for (const auto &node : fields.nodes())
@@ -82,7 +90,7 @@ namespace
         const double         distance = r - R;
         if ((value < 0) != (start < 0))
           ++sign_changes;
-        if (std::abs(distance) < h / 4)
+        if (std::abs(distance) < near)
           near_change = std::max(near_change, std::abs(value - start));
         if (std::abs(distance) > far && r > 0)
           {
@@ -95,10 +103,15 @@ namespace
                          (level_set_gradient.at(node) - offset / r).norm());
           }
       }
-    const std::string label = std::to_string(dim) + "D, " +
-                              (cubic ? "gradient augmented" : "linear") + ", ";
+    const std::string label =
+      std::to_string(dim) + "D, " + (cubic ? "gradient augmented" : "linear") +
+      (kept_cells > 0 ? ", kept " + std::to_string(kept_cells) + "h" : "") +
+      ", ";
     unit_test::check_below(out,
-                           label + "change of the nodes within h/4",
+                           label + "change of the nodes within " +
+                             (kept_cells > 0
+                                ? std::to_string(kept_cells) + "h - h/2"
+                                : "h/4"),
                            Utilities::MPI::max(near_change, comm),
                            1e-15);
     out << label << "nodes beyond the kept ones: "
@@ -125,6 +138,7 @@ main(int argc, char **argv)
   return unit_test::run(argc, argv, [](std::ostream &out) {
     check<2>(out, vefs::LevelSetInterpolation::linear);
     check<2>(out, vefs::LevelSetInterpolation::gradient_augmented);
+    check<2>(out, vefs::LevelSetInterpolation::gradient_augmented, 4);
     check<3>(out, vefs::LevelSetInterpolation::linear);
     check<3>(out, vefs::LevelSetInterpolation::gradient_augmented);
   });

@@ -18,13 +18,16 @@ namespace vefs
    * the transport interpolates it (@p interpolation: Q1, or cubic Hermite,
    * whose zero set differs from the Q1 one by O(h^2)); the
    * @p level_set_gradient of those nodes becomes the unit vector away from
-   * the nearest crossing.
+   * the nearest crossing. Nodes nearer the surface than @p kept_distance
+   * keep their values too: the characteristics of the next remaps read them
+   * (doc/transport.md, "Redistancing from a distance function").
    */
   template <int dim>
   void
   redistance(TransportedFields<dim>     &fields,
              LevelSetGradient<dim>      &level_set_gradient,
-             const LevelSetInterpolation interpolation);
+             const LevelSetInterpolation interpolation,
+             const double                kept_distance = 0);
 } // namespace vefs
 
 #endif
