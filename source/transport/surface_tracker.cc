@@ -100,7 +100,8 @@ namespace vefs
       redistance(fields,
                  level_set_gradient,
                  parameters.level_set_interpolation,
-                 parameters.kept_at_redistancing * levels.finest_cell_size);
+                 parameters.kept_at_redistancing(dim) *
+                   levels.finest_cell_size);
     if (parameters.volume_correction)
       {
         const double shift = correct_volume(fields, volume_expected);

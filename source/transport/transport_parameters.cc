@@ -174,7 +174,6 @@ namespace vefs
                            !band_predicted
                          ? (dimension == 2 ? 20 : 10)
                          : 0;
-    kept_at_redistancing = dimension == 2 ? 2 * remap_distance : 0;
     if (stress_interpolation == StressInterpolation::automatic)
       stress_interpolation =
         velocity_interpolation == VelocityInterpolation::linear

@@ -431,9 +431,9 @@ main()
       std::ostringstream text;
       text << "remap distance " << parameters.transport.remap_distance
            << ", kept at redistancing "
-           << parameters.transport.kept_at_redistancing << ", band width "
-           << parameters.mesh.band_width << ", miss tolerance "
-           << parameters.mesh.band_miss_tolerance;
+           << parameters.transport.kept_at_redistancing(parameters.dimension)
+           << ", band width " << parameters.mesh.band_width
+           << ", miss tolerance " << parameters.mesh.band_miss_tolerance;
       return text.str();
     };
     const std::string gradient_augmented =

@@ -55,13 +55,7 @@ namespace vefs
     double       remap_distance           = 0;
     bool         automatic_remap_distance = true;
     unsigned int redistancing_interval    = 1;
-    /**
-     * Finest cells from the surface within which redistancing leaves the
-     * level set as transported: twice the remap distance in 2D, 0 in 3D
-     * (resolve()).
-     */
-    double kept_at_redistancing = 0;
-    bool   volume_correction    = true;
+    bool         volume_correction        = true;
 
     std::string prescribed_velocity   = "";
     std::string exact_final_level_set = "";
@@ -78,15 +72,25 @@ namespace vefs
      * fields. An 'automatic' remap distance becomes 20 in 2D and 10 in 3D
      * (@p dimension) for the gradient augmented level set carried by a
      * prescribed velocity (unless @p band_predicted: that placement adapts
-     * the mesh at every step), 0 otherwise; the level set is kept as
-     * transported at redistancing within twice the remap distance in 2D
-     * and not in 3D (measured: doc/transport.md, "Not in 3D").
+     * the mesh at every step), 0 otherwise (measured: doc/transport.md,
+     * "Not in 3D").
      */
     void
     resolve(const bool         band_predicted,
             const bool         band_in_one_change,
             const bool         stiff_solid,
             const unsigned int dimension);
+
+    /**
+     * Finest cells from the surface within which redistancing leaves the
+     * level set as transported in @p dimension: twice the remap distance in
+     * 2D, none in 3D (doc/transport.md, "Not in 3D").
+     */
+    double
+    kept_at_redistancing(const unsigned int dimension) const
+    {
+      return dimension == 2 ? 2 * remap_distance : 0;
+    }
 
     /**
      * Whether the feet read every field by linear interpolation, which
