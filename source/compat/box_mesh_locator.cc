@@ -163,6 +163,20 @@ namespace vefs
   }
 
   template <int dim>
+  Tensor<1, dim>
+  BoxMeshLocator<dim>::gradient_beyond_contact_walls(
+    const Point<dim>     &p,
+    const Tensor<1, dim> &g) const
+  {
+    Tensor<1, dim> gradient = g;
+    for (unsigned int d = 0; d < dim; ++d)
+      if ((contact[2 * d] && p[d] < cavity.lower_bound(d)) ||
+          (contact[2 * d + 1] && p[d] > cavity.upper_bound(d)))
+        gradient[d] = 0;
+    return gradient;
+  }
+
+  template <int dim>
   Point<dim>
   BoxMeshLocator<dim>::unit_point(
     const typename Triangulation<dim>::active_cell_iterator &cell,

@@ -536,12 +536,21 @@ namespace vefs
     if (gradient_augmented)
       for (unsigned int i = 0; i < nodes.size(); ++i)
         {
-          // grad psi_new(x) = J^T grad psi_old(X(x)).
+          // grad psi_new(x) = J^T grad psi_old(X(x)). Beyond a contact
+          // wall psi_old is the wall's value, without a normal derivative:
+          // carried along, the wall's normal derivative bends the Hermite
+          // cubic of the cells at the wall as liquid climbs it (the seed's
+          // soft ball: 16 % more liquid by t = 0.3 s without the volume
+          // correction, 4 % without that derivative; doc/transport.md).
+          // Beyond a wall the liquid cannot leave, a foot is a trace error
+          // and the gradient there extrapolates.
           const Tensor<2, dim> &J = jacobians[i];
           Tensor<1, dim>        old_gradient;
           for (unsigned int d = 0; d < dim; ++d)
             old_gradient[d] = at_feet[i].extra(d);
-          level_set_gradient.set(nodes[i], old_gradient * J);
+          level_set_gradient.set(
+            nodes[i],
+            locator.gradient_beyond_contact_walls(feet[i], old_gradient) * J);
         }
     fields.finalize();
     if (gradient_augmented)

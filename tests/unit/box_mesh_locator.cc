@@ -8,7 +8,9 @@
 // - owner_rank() is this rank exactly for the points in owned cells and
 //   another rank for the others.
 // And fold_into_cavity() wraps a periodic direction and moves points back
-// onto the other walls, a hair (1e-10 of the side) inside.
+// onto the other walls, a hair (1e-10 of the side) inside;
+// gradient_beyond_contact_walls() equals central differences of
+// f(fold_into_cavity(p)) beyond contact walls.
 
 #include "unit_test.h"
 
@@ -147,6 +149,48 @@ namespace
                            name + "fold_into_cavity error",
                            locator.fold_into_cavity(outside).distance(folded),
                            1e-15);
+    // Beyond contact walls (x = 0, and z = 2 in 3D) the gradient of
+    // f(fold_into_cavity(p)), against central differences (step 1e-6:
+    // errors of order 1e-12 from the smooth f, 1e-10 from round-off).
+    walls[0] = vefs::WallType::contact;
+    if (dim == 3)
+      walls[5] = vefs::WallType::contact;
+    const vefs::BoxMeshLocator<dim> contact_locator(triangulation,
+                                                    cavity,
+                                                    subdivisions,
+                                                    walls);
+    const auto                      folded_f = [&](const Point<dim> &p) {
+      const Point<dim> q = contact_locator.fold_into_cavity(p);
+      return std::sin(q[0]) * std::cos(2 * q[1]) + q[dim - 1] * q[dim - 1];
+    };
+    const Point<dim> q = contact_locator.fold_into_cavity(outside);
+    Tensor<1, dim>   grad_f;
+    grad_f[0] = std::cos(q[0]) * std::cos(2 * q[1]);
+    grad_f[1] = -2 * std::sin(q[0]) * std::sin(2 * q[1]);
+    grad_f[dim - 1] += 2 * q[dim - 1];
+    Tensor<1, dim> central_difference;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double h     = 1e-6;
+        Point<dim>   plus  = outside;
+        Point<dim>   minus = outside;
+        plus[d] += h;
+        minus[d] -= h;
+        central_difference[d] = (folded_f(plus) - folded_f(minus)) / (2 * h);
+      }
+    unit_test::check_below(
+      out,
+      name + "gradient_beyond_contact_walls - central differences",
+      (contact_locator.gradient_beyond_contact_walls(outside, grad_f) -
+       central_difference)
+        .norm(),
+      1e-8);
+    const Tensor<1, dim> gradient =
+      contact_locator.gradient_beyond_contact_walls(outside, grad_f);
+    out << name << "derivatives normal to the contact walls: " << gradient[0];
+    if (dim == 3)
+      out << ' ' << gradient[dim - 1];
+    out << '\n';
   }
 } // namespace
 

@@ -45,6 +45,16 @@ namespace vefs
     double
     distance_beyond_contact_walls(const Point<dim> &p) const;
 
+    /**
+     * The gradient at @p p of a field f extended beyond the contact walls
+     * by f(fold_into_cavity(p)), given the gradient @p g of f at the
+     * folded point: constant across a contact wall, the extension has no
+     * derivative along the wall's normal.
+     */
+    Tensor<1, dim>
+    gradient_beyond_contact_walls(const Point<dim>     &p,
+                                  const Tensor<1, dim> &g) const;
+
     /** The active cell containing @p p; it may be artificial on this rank. */
     typename Triangulation<dim>::active_cell_iterator
     locate(const Point<dim> &p) const;
