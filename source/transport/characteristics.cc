@@ -541,9 +541,9 @@ namespace vefs
           // carried along, the wall's normal derivative bends the Hermite
           // cubic of the cells at the wall as liquid climbs it (the seed's
           // soft ball: 16 % more liquid by t = 0.3 s without the volume
-          // correction, 4 % without that derivative; doc/transport.md).
-          // Beyond a wall the liquid cannot leave, a foot is a trace error
-          // and the gradient there extrapolates.
+          // correction, 4 % without that derivative;
+          // doc/transport_in_flows.md). Beyond a wall the liquid cannot leave,
+          // a foot is a trace error and the gradient there extrapolates.
           const Tensor<2, dim> &J = jacobians[i];
           Tensor<1, dim>        old_gradient;
           for (unsigned int d = 0; d < dim; ++d)

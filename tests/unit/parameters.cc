@@ -10,7 +10,9 @@
 //  - Every moved entry set at its old place lands in its new member, with
 //    one warning naming both places; old and new place together are refused.
 //  - 'automatic' entries resolve by the material's regime or, for the
-//    stress interpolation, by the velocity interpolation; the velocity
+//    stress interpolation, by the velocity interpolation; the level set
+//    interpolation by the dimension, a prescribed velocity and the band
+//    placement; the velocity
 //    interpolation by the regime and the band placement; the remap
 //    distance by the level set interpolation, a prescribed velocity and
 //    the band placement; the band width and miss tolerance by the band
@@ -401,6 +403,52 @@ main()
   }
 
   {
+    // 'Level set interpolation = automatic': gradient augmented in 2D and
+    // for a prescribed velocity, linear for a 3D flow and with 'Band
+    // placement = predicted, one change'. Explicit values stay.
+    const auto level_set = [](const unsigned int dimension,
+                              const std::string &transport,
+                              const std::string &mesh) {
+      const std::string cavity_3d =
+        "set Gravity = 0, 0, 0\nsubsection Cavity\n"
+        "  set Lower corner = 0, 0, 0\n  set Upper corner = 1, 1, 1\n"
+        "  set Coarse subdivisions = 1, 1, 1\nend\n"
+        "subsection Initial liquid\n  set Shape = ball\n"
+        "  set Ball center = 0.5, 0.5, 0.5\n  set Velocity = 0; 0; 0\nend\n";
+      write("level_set.prm",
+            "set Dimension = " + std::to_string(dimension) + "\n" +
+              (dimension == 3 ? cavity_3d : "") + "subsection Transport\n" +
+              transport + "end\nsubsection Mesh refinement\n" + mesh + "end\n");
+      vefs::Parameters parameters;
+      ParameterHandler prm;
+      parameters.declare(prm);
+      vefs::read_parameter_file(prm,
+                                "level_set.prm",
+                                vefs::Parameters::moved_entries);
+      parameters.check();
+      switch (parameters.transport.level_set_interpolation)
+        {
+          case vefs::LevelSetInterpolation::linear:
+            return "linear";
+          case vefs::LevelSetInterpolation::gradient_augmented:
+            return "gradient augmented";
+          default:
+            return "other";
+        }
+    };
+    out << "level set interpolation automatic, 2D flow: "
+        << level_set(2, "", "") << '\n';
+    out << "the same, 3D flow: " << level_set(3, "", "") << '\n';
+    out << "the same, 3D, prescribed velocity: "
+        << level_set(3, "  set Prescribed velocity = 1; 0; 0\n", "") << '\n';
+    out << "the same, 2D, band predicted, one change: "
+        << level_set(2, "", "  set Band placement = predicted, one change\n")
+        << '\n';
+    out << "linear, 2D flow: "
+        << level_set(2, "  set Level set interpolation = linear\n", "") << '\n';
+  }
+
+  {
     // 'Remap distance = automatic': 20 in 2D and 10 in 3D for the gradient
     // augmented level set carried by a prescribed velocity, unless the band
     // is predicted; 0 otherwise. Redistancing keeps the level set within
@@ -439,11 +487,12 @@ main()
     const std::string gradient_augmented =
       "  set Level set interpolation = gradient augmented\n";
     const std::string prescribed = "  set Prescribed velocity = 1; 0\n";
-    out << "automatic, flow, linear: " << resolved("", "") << '\n';
+    const std::string linear     = "  set Level set interpolation = linear\n";
+    out << "automatic, flow, linear: " << resolved(linear, "") << '\n';
     out << "automatic, flow, gradient augmented: "
         << resolved(gradient_augmented, "") << '\n';
     out << "automatic, prescribed velocity, linear: "
-        << resolved(prescribed, "") << '\n';
+        << resolved(prescribed + linear, "") << '\n';
     out << "automatic, prescribed velocity, gradient augmented: "
         << resolved(prescribed + gradient_augmented, "") << '\n';
     out << "the same, 3D: "
@@ -513,21 +562,29 @@ main()
                            ? "predicted, one change"
                            : "predicted");
     };
-    const std::string local = "  set Strain bound = local\n";
+    const std::string local  = "  set Strain bound = local\n";
+    const std::string linear = "  set Level set interpolation = linear\n";
     out << "band placement automatic, strain bound step: "
-        << placement("", "", "") << '\n';
+        << placement("", linear, "") << '\n';
     out << "band placement automatic, strain bound local: "
-        << placement(local, "", "") << '\n';
+        << placement(local, linear, "") << '\n';
     out << "the same, target CFL 5: "
-        << placement(local + "  set Target CFL = 5\n", "", "") << '\n';
+        << placement(local + "  set Target CFL = 5\n", linear, "") << '\n';
     for (const std::string feet : {"Level set interpolation = cubic",
+                                   "Level set interpolation = automatic",
                                    "Velocity interpolation = limited cubic",
                                    "Stress interpolation = limited cubic",
                                    "Remap distance = 3"})
       out << "the same, " << feet << ": "
-          << placement(local, "  set " + feet + "\n", "") << '\n';
+          << placement(local,
+                       feet.find("Level set") == 0
+                         ? "  set " + feet + "\n"
+                         : linear + "  set " + feet + "\n",
+                       "")
+          << '\n';
     out << "band placement predicted, strain bound local: "
-        << placement(local, "", "  set Band placement = predicted\n") << '\n';
+        << placement(local, linear, "  set Band placement = predicted\n")
+        << '\n';
     out << "band placement predicted, one change, strain bound step: "
         << placement("", "", "  set Band placement = predicted, one change\n")
         << '\n';

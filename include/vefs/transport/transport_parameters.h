@@ -10,6 +10,8 @@ namespace vefs
   /** How the level set is interpolated at the feet of the characteristics. */
   enum class LevelSetInterpolation
   {
+    /** By the dimension: TransportParameters::resolve_level_set(). */
+    automatic,
     linear,
     cubic,
     limited_cubic,
@@ -47,7 +49,7 @@ namespace vefs
     declare(dealii::ParameterHandler &prm);
 
     LevelSetInterpolation level_set_interpolation =
-      LevelSetInterpolation::linear;
+      LevelSetInterpolation::automatic;
     VelocityInterpolation velocity_interpolation =
       VelocityInterpolation::automatic;
     StressInterpolation stress_interpolation = StressInterpolation::automatic;
@@ -59,6 +61,19 @@ namespace vefs
 
     std::string prescribed_velocity   = "";
     std::string exact_final_level_set = "";
+
+    /**
+     * An 'automatic' level set interpolation becomes gradient augmented in
+     * 2D (@p dimension) and for a prescribed velocity, linear for a 3D
+     * flow (there the 3D ball's Stokes solver stopped converging at its
+     * impact, doc/transport_in_flows.md) and with
+     * @p band_in_one_change_set (that placement keeps Q1 fields only).
+     * First of the transport's entries: the band placement's automatic
+     * value depends on it.
+     */
+    void
+    resolve_level_set(const unsigned int dimension,
+                      const bool         band_in_one_change_set);
 
     /**
      * 'automatic' velocity interpolation becomes cubic for a stiff

@@ -1,0 +1,115 @@
+#!/usr/bin/env python3
+"""The level set's interpolation at the feet in the 2D flow scenes: each
+flow test scene run with 'Transport/Level set interpolation' = linear and
+= gradient augmented, the two runs side by side (two processes of one rank
+each, so that their wall times are taken at the same load), and each run
+checked by the test's own checker (tests/<scene>.py).
+
+Usage (from anywhere):
+  /usr/bin/python3 benchmarks/level_set_in_flows.py [--vefs build/vefs]
+      [--scenes broken_dam_2d drop_into_pool_2d ...]
+      [--results-dir benchmarks/results/level_set_in_flows]
+      [--output benchmarks/results/level_set_in_flows.md] [--no-run]
+
+The report lists, per scene, the wall and CPU time of each run, the ratio
+of the CPU times (less sensitive to other load than the wall times) and the
+lines of the checker's output that differ between the two (the measured
+events, errors and energies), as doc/transport_in_flows.md quotes them.
+"""
+import argparse
+import os
+import subprocess
+import sys
+
+from vefs_tools import REPO_ROOT as ROOT
+from vefs_tools.prm import apply_settings, set_entry
+from vefs_tools.run import (add_study_arguments, run_vefs, vefs_command,
+                            write_report)
+
+SCENES = ["broken_dam_2d", "broken_dam_2d_large_steps", "drop_into_pool_2d",
+          "standing_wave_2d", "bouncing_ball_2d_stiff",
+          "bouncing_ball_2d_soft", "oscillating_beam_2d",
+          "clamped_beam_at_rest"]
+INTERPOLATIONS = ["linear", "gradient augmented"]
+
+
+def run_pair(vefs, results, scene, settings):
+    """Both runs of `scene` at once; returns their wall times (None if a
+    run failed)."""
+    with open(os.path.join(ROOT, "tests", scene + ".prm")) as f:
+        text = f.read()
+    processes = []
+    for interpolation in INTERPOLATIONS:
+        name = "%s_%s" % (scene, interpolation.split()[0])
+        output_dir = os.path.join(results, name)
+        prm = apply_settings(set_entry(set_entry(
+            text, ["Transport"], "Level set interpolation", interpolation),
+            [], "Output directory", output_dir), settings)
+        prm_file = os.path.join(results, name + ".prm")
+        with open(prm_file, "w") as f:
+            f.write(prm)
+        processes.append((name, vefs_command(vefs, 1, prm_file)))
+    # Two runs of one rank each: run_vefs waits, so start one in a child.
+    pid = os.fork()
+    if pid == 0:
+        run = run_vefs(processes[1][1],
+                       os.path.join(results, processes[1][0] + ".log"))
+        with open(os.path.join(results, processes[1][0] + ".wall"), "w") as f:
+            f.write("%g %g %d" % (run.wall, run.cpu, run.returncode))
+        os._exit(0)
+    run = run_vefs(processes[0][1],
+                   os.path.join(results, processes[0][0] + ".log"))
+    with open(os.path.join(results, processes[0][0] + ".wall"), "w") as f:
+        f.write("%g %g %d" % (run.wall, run.cpu, run.returncode))
+    os.waitpid(pid, 0)
+
+
+def checked(results, scene, interpolation):
+    """(wall time, CPU time, returncode, checker lines) of one run."""
+    name = "%s_%s" % (scene, interpolation.split()[0])
+    with open(os.path.join(results, name + ".wall")) as f:
+        wall, cpu, code = f.read().split()
+    checker = subprocess.run(
+        [sys.executable, os.path.join(ROOT, "tests", scene + ".py"),
+         os.path.join(results, name)], cwd=os.path.join(ROOT, "tests"),
+        env=dict(os.environ, PYTHONPATH=os.path.join(ROOT, "scripts")),
+        capture_output=True, text=True)
+    lines = [l for l in checker.stdout.splitlines()
+             if l.strip() and not l.lstrip()[0].isdigit()]
+    if checker.returncode != 0:
+        lines.append("checker failed: " + checker.stderr.strip()[-200:])
+    return float(wall), float(cpu), int(code), lines
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    add_study_arguments(parser, "level_set_in_flows",
+                        "level_set_in_flows.md")
+    parser.add_argument("--scenes", nargs="+", default=SCENES)
+    args = parser.parse_args()
+    os.makedirs(args.results_dir, exist_ok=True)
+    if not args.no_run:
+        for scene in args.scenes:
+            run_pair(args.vefs, args.results_dir, scene, args.set)
+            print(scene, "done", flush=True)
+    lines = ["# The level set interpolation in the 2D flow tests", "",
+             "linear / gradient augmented, run side by side on one rank "
+             "each (%s)." % args.vefs, ""]
+    for scene in args.scenes:
+        (wall_l, cpu_l, code_l, out_l), (wall_g, cpu_g, code_g, out_g) = [
+            checked(args.results_dir, scene, i) for i in INTERPOLATIONS]
+        lines.append("## %s: wall time %.1f / %.1f s, CPU time %.1f / %.1f s "
+                     "(ratio %.2f)%s" % (
+            scene, wall_l, wall_g, cpu_l, cpu_g, cpu_g / cpu_l,
+            "" if code_l == code_g == 0 else
+            ", exit codes %d / %d" % (code_l, code_g)))
+        lines.append("")
+        for a, b in zip(out_l, out_g):
+            if a != b:
+                lines += ["- linear: " + a, "- gradient augmented: " + b]
+        lines.append("")
+    write_report(args.output, lines)
+
+
+if __name__ == "__main__":
+    main()
