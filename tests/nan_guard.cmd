@@ -32,8 +32,8 @@ run fast_start "subsection Initial liquid" "set Velocity = 1000; 0" "end"
 run huge_gravity "set Gravity = 0, -1e5"
 # A gravity so large that the Stokes solution overflows.
 run overflowing_gravity "set Gravity = 0, -1e305"
-# The volume drifts without correction, beyond a tight bound.
-run volume_drift "subsection Transport" "set Volume correction = false" "end" \
+# Volume lost without correction, beyond a tight bound.
+run volume_loss "subsection Transport" "set Volume correction = false" "end" \
   "subsection Health check" "set Maximum volume change = 1e-4" "end"
 # With a target CFL, the steps that would be needed exceed the bound.
 run too_many_steps "subsection Time" "set Time step = 0.1" "set Target CFL = 0.5" \
