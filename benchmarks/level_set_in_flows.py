@@ -17,6 +17,7 @@ lines of the checker's output that differ between the two (the measured
 events, errors and energies), as doc/transport_in_flows.md quotes them.
 """
 import argparse
+import concurrent.futures
 import os
 import subprocess
 import sys
@@ -33,40 +34,43 @@ SCENES = ["broken_dam_2d", "broken_dam_2d_large_steps", "drop_into_pool_2d",
 INTERPOLATIONS = ["linear", "gradient augmented"]
 
 
+def run_name(scene, interpolation):
+    """The name of a run's files in the results directory."""
+    return "%s_%s" % (scene, interpolation.split()[0])
+
+
+def run_and_record(vefs, results, name):
+    """Run <results>/<name>.prm on one rank; its wall time, CPU time and
+    exit status go to <name>.wall."""
+    run = run_vefs(vefs_command(vefs, 1, os.path.join(results, name + ".prm")),
+                   os.path.join(results, name + ".log"))
+    with open(os.path.join(results, name + ".wall"), "w") as f:
+        f.write("%g %g %d" % (run.wall, run.cpu, run.returncode))
+
+
 def run_pair(vefs, results, scene, settings):
-    """Both runs of `scene` at once; returns their wall times (None if a
-    run failed)."""
+    """Both runs of `scene` at once (two threads, each waiting for its own
+    vefs process)."""
     with open(os.path.join(ROOT, "tests", scene + ".prm")) as f:
         text = f.read()
-    processes = []
+    names = []
     for interpolation in INTERPOLATIONS:
-        name = "%s_%s" % (scene, interpolation.split()[0])
-        output_dir = os.path.join(results, name)
+        name = run_name(scene, interpolation)
         prm = apply_settings(set_entry(set_entry(
             text, ["Transport"], "Level set interpolation", interpolation),
-            [], "Output directory", output_dir), settings)
-        prm_file = os.path.join(results, name + ".prm")
-        with open(prm_file, "w") as f:
+            [], "Output directory", os.path.join(results, name)), settings)
+        with open(os.path.join(results, name + ".prm"), "w") as f:
             f.write(prm)
-        processes.append((name, vefs_command(vefs, 1, prm_file)))
-    # Two runs of one rank each: run_vefs waits, so start one in a child.
-    pid = os.fork()
-    if pid == 0:
-        run = run_vefs(processes[1][1],
-                       os.path.join(results, processes[1][0] + ".log"))
-        with open(os.path.join(results, processes[1][0] + ".wall"), "w") as f:
-            f.write("%g %g %d" % (run.wall, run.cpu, run.returncode))
-        os._exit(0)
-    run = run_vefs(processes[0][1],
-                   os.path.join(results, processes[0][0] + ".log"))
-    with open(os.path.join(results, processes[0][0] + ".wall"), "w") as f:
-        f.write("%g %g %d" % (run.wall, run.cpu, run.returncode))
-    os.waitpid(pid, 0)
+        names.append(name)
+    with concurrent.futures.ThreadPoolExecutor(len(names)) as pool:
+        for done in [pool.submit(run_and_record, vefs, results, name)
+                     for name in names]:
+            done.result()
 
 
 def checked(results, scene, interpolation):
     """(wall time, CPU time, returncode, checker lines) of one run."""
-    name = "%s_%s" % (scene, interpolation.split()[0])
+    name = run_name(scene, interpolation)
     with open(os.path.join(results, name + ".wall")) as f:
         wall, cpu, code = f.read().split()
     checker = subprocess.run(
