@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """The level set's interpolation at the feet in the 2D flow scenes: each
-flow test scene run with 'Transport/Level set interpolation' = linear and
-= gradient augmented, the two runs side by side (two processes of one rank
-each, so that their wall times are taken at the same load), and each run
-checked by the test's own checker (tests/<scene>.py).
+flow test scene run with two values of 'Transport/Level set interpolation'
+(linear and gradient augmented unless --pair says otherwise), the two runs
+side by side (two processes of one rank each, so that their wall times are
+taken at the same load), and each run checked by the test's own checker
+(tests/<scene>.py).
 
 Usage (from anywhere):
   /usr/bin/python3 benchmarks/level_set_in_flows.py [--vefs build/vefs]
-      [--scenes broken_dam_2d drop_into_pool_2d ...]
+      [--scenes broken_dam_2d drop_into_pool_2d ...] [--pair linear cubic]
       [--results-dir benchmarks/results/level_set_in_flows]
       [--output benchmarks/results/level_set_in_flows.md] [--no-run]
 
@@ -31,12 +32,12 @@ SCENES = ["broken_dam_2d", "broken_dam_2d_large_steps", "drop_into_pool_2d",
           "standing_wave_2d", "bouncing_ball_2d_stiff",
           "bouncing_ball_2d_soft", "oscillating_beam_2d",
           "clamped_beam_at_rest"]
-INTERPOLATIONS = ["linear", "gradient augmented"]
+PAIR = ["linear", "gradient augmented"]
 
 
 def run_name(scene, interpolation):
     """The name of a run's files in the results directory."""
-    return "%s_%s" % (scene, interpolation.split()[0])
+    return "%s_%s" % (scene, interpolation.replace(" ", "_"))
 
 
 def run_and_record(vefs, results, name):
@@ -48,13 +49,13 @@ def run_and_record(vefs, results, name):
         f.write("%g %g %d" % (run.wall, run.cpu, run.returncode))
 
 
-def run_pair(vefs, results, scene, settings):
+def run_pair(vefs, results, scene, pair, settings):
     """Both runs of `scene` at once (two threads, each waiting for its own
     vefs process)."""
     with open(os.path.join(ROOT, "tests", scene + ".prm")) as f:
         text = f.read()
     names = []
-    for interpolation in INTERPOLATIONS:
+    for interpolation in pair:
         name = run_name(scene, interpolation)
         prm = apply_settings(set_entry(set_entry(
             text, ["Transport"], "Level set interpolation", interpolation),
@@ -90,18 +91,22 @@ def main():
     add_study_arguments(parser, "level_set_in_flows",
                         "level_set_in_flows.md")
     parser.add_argument("--scenes", nargs="+", default=SCENES)
+    parser.add_argument("--pair", nargs=2, default=PAIR,
+                        metavar=("FIRST", "SECOND"),
+                        help="the two interpolations compared")
     args = parser.parse_args()
     os.makedirs(args.results_dir, exist_ok=True)
     if not args.no_run:
         for scene in args.scenes:
-            run_pair(args.vefs, args.results_dir, scene, args.set)
+            run_pair(args.vefs, args.results_dir, scene, args.pair, args.set)
             print(scene, "done", flush=True)
+    first, second = args.pair
     lines = ["# The level set interpolation in the 2D flow tests", "",
-             "linear / gradient augmented, run side by side on one rank "
-             "each (%s)." % args.vefs, ""]
+             "%s / %s, run side by side on one rank each (%s)." % (
+                 first, second, args.vefs), ""]
     for scene in args.scenes:
         (wall_l, cpu_l, code_l, out_l), (wall_g, cpu_g, code_g, out_g) = [
-            checked(args.results_dir, scene, i) for i in INTERPOLATIONS]
+            checked(args.results_dir, scene, i) for i in args.pair]
         lines.append("## %s: wall time %.1f / %.1f s, CPU time %.1f / %.1f s "
                      "(ratio %.2f)%s" % (
             scene, wall_l, wall_g, cpu_l, cpu_g, cpu_g / cpu_l,
@@ -110,7 +115,7 @@ def main():
         lines.append("")
         for a, b in zip(out_l, out_g):
             if a != b:
-                lines += ["- linear: " + a, "- gradient augmented: " + b]
+                lines += ["- %s: %s" % (first, a), "- %s: %s" % (second, b)]
         lines.append("")
     write_report(args.output, lines)
 

@@ -35,11 +35,9 @@ namespace vefs
                     "a prescribed velocity (the transport benchmarks), "
                     "linear for a flow: gradient augmented keeps a "
                     "falling drop's area (-0.2 % against -7.8 %, test "
-                    "drop_into_pool_2d) and the dam's front, but in "
-                    "prm/drop_into_pool_2d.prm the waves that run up the "
-                    "walls gain energy (+2.9 J/m by t = 0.4 s, where linear "
-                    "loses 0.6), and the 3D ball's Stokes solver stops "
-                    "converging at its impact; see doc/transport_in_flows.md.");
+                    "drop_into_pool_2d) and the dam's front, but the 3D "
+                    "ball's Stokes solver stops converging at its impact; "
+                    "see doc/transport_in_flows.md.");
       add_selection(
         prm,
         "Velocity interpolation",

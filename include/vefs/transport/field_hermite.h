@@ -75,6 +75,17 @@ namespace vefs
                     const unsigned int component,
                     const bool         limited) const;
 
+    /** The level set's nodal gradient at an owned @p node (after recover()). */
+    Tensor<1, dim>
+    nodal_gradient(const typename TransportedFields<dim>::Node &node) const
+    {
+      constexpr unsigned int c = TransportedFields<dim>::level_set_component;
+      Tensor<1, dim>         gradient;
+      for (unsigned int d = 0; d < dim; ++d)
+        gradient[d] = derivatives[(1u << d) - 1](node.dofs[c]);
+      return gradient;
+    }
+
   private:
     double
     interpolate(const TransportedFields<dim>                         &fields,
