@@ -177,6 +177,24 @@ namespace vefs
   }
 
   template <int dim>
+  bool
+  BoxMeshLocator<dim>::touches_contact_wall(
+    const typename Triangulation<dim>::active_cell_iterator &cell) const
+  {
+    const Point<dim> lower = cell->vertex(0);
+    const Point<dim> upper =
+      cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double margin = 1e-10 * cavity.side_length(d);
+        if ((contact[2 * d] && lower[d] < cavity.lower_bound(d) + margin) ||
+            (contact[2 * d + 1] && upper[d] > cavity.upper_bound(d) - margin))
+          return true;
+      }
+    return false;
+  }
+
+  template <int dim>
   Point<dim>
   BoxMeshLocator<dim>::unit_point(
     const typename Triangulation<dim>::active_cell_iterator &cell,

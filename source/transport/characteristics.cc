@@ -75,6 +75,11 @@ namespace vefs
       /** The level set by this Hermite interpolation, if not null. */
       const FieldHermite<dim> *hermite = nullptr;
       bool                     limited = false;
+      /**
+       * If not null, the level set's Hermite cubic is also limited in the
+       * cells at these contact walls.
+       */
+      const BoxMeshLocator<dim> *limited_at_contact_walls = nullptr;
       /** Extras: the gradient of the (Hermite) level set. */
       bool level_set_gradient = false;
       /**
@@ -187,12 +192,14 @@ namespace vefs
       if (how.hermite)
         {
           Tensor<1, dim> gradient;
-          values[level_set] =
-            how.hermite->value(fields,
-                               dof_cell,
-                               xi,
-                               how.limited,
-                               how.level_set_gradient ? &gradient : nullptr);
+          values[level_set] = how.hermite->value(
+            fields,
+            dof_cell,
+            xi,
+            how.limited ||
+              (how.limited_at_contact_walls &&
+               how.limited_at_contact_walls->touches_contact_wall(cell)),
+            how.level_set_gradient ? &gradient : nullptr);
           if (how.level_set_gradient)
             for (unsigned int d = 0; d < dim; ++d)
               values.extra(d) = gradient[d];
@@ -495,6 +502,12 @@ namespace vefs
                                        interpolation.level_set,
                                        hermite);
     how.coarsened_detail  = coarsened_detail;
+    // A cubic that overshoots its nodal values in a cell at a contact wall
+    // lays liquid thinner than a cell along the wall, which the contact set
+    // then holds: with any unlimited cubic level set the 3D ball's Stokes
+    // solver stopped at its impact (doc/transport_in_flows.md, "The 3D
+    // ball").
+    how.limited_at_contact_walls = &locator;
     std::vector<unsigned int> cubic_components;
     if (interpolation.velocity != VelocityInterpolation::linear)
       {

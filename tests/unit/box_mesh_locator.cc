@@ -10,7 +10,8 @@
 // And fold_into_cavity() wraps a periodic direction and moves points back
 // onto the other walls, a hair (1e-10 of the side) inside;
 // gradient_beyond_contact_walls() equals central differences of
-// f(fold_into_cavity(p)) beyond contact walls.
+// f(fold_into_cavity(p)) beyond contact walls; touches_contact_wall() holds
+// for exactly the cells with a boundary face on a contact wall.
 
 #include "unit_test.h"
 
@@ -191,6 +192,30 @@ namespace
     if (dim == 3)
       out << ' ' << gradient[dim - 1];
     out << '\n';
+
+    // touches_contact_wall() against deal.II's boundary faces: a cell has a
+    // face at the boundary whose center lies on x = 0 (or z = 2).
+    unsigned int n_touching = 0, n_different = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          bool on_contact_wall = false;
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const Point<dim> center = cell->face(f)->center();
+                on_contact_wall =
+                  on_contact_wall || std::abs(center[0]) < 1e-12 ||
+                  (dim == 3 && std::abs(center[dim - 1] - 2) < 1e-12);
+              }
+          n_touching += on_contact_wall;
+          n_different +=
+            on_contact_wall != contact_locator.touches_contact_wall(cell);
+        }
+    out << name
+        << "cells at contact walls: " << Utilities::MPI::sum(n_touching, comm)
+        << ", touches_contact_wall() different: "
+        << Utilities::MPI::sum(n_different, comm) << '\n';
   }
 } // namespace
 

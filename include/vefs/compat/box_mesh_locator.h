@@ -55,6 +55,11 @@ namespace vefs
     gradient_beyond_contact_walls(const Point<dim>     &p,
                                   const Tensor<1, dim> &g) const;
 
+    /** Whether a face of the axis-aligned @p cell lies on a contact wall. */
+    bool
+    touches_contact_wall(
+      const typename Triangulation<dim>::active_cell_iterator &cell) const;
+
     /** The active cell containing @p p; it may be artificial on this rank. */
     typename Triangulation<dim>::active_cell_iterator
     locate(const Point<dim> &p) const;
