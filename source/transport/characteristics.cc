@@ -571,8 +571,8 @@ namespace vefs
       {
         level_set_gradient.finalize(fields);
         // Bound 1: the drop into a pool keeps its energy falling, Zalesak's
-        // disk and the vortex are unchanged (0.5 cost the disk 8 %;
-        // doc/transport_in_flows.md).
+        // disk and the vortex keep their shape errors (0.5 cost the disk
+        // 8 %; doc/transport_in_flows.md).
         hold_gradient_to_values(fields, level_set_gradient, 1.);
       }
   }

@@ -22,9 +22,10 @@ namespace vefs
    * gradient r of the Q1 values (the mean of the cells' Q1 gradients around
    * the node, FieldHermite's recovered one); where |g - r| exceeds
    * @p bound * max(1, |r|), g becomes r. Where the level set is smooth on
-   * the scale of a cell, g and r agree to O(h) and nothing changes; a
-   * filament thinner than a cell, whose g the values cannot reproduce, has
-   * |g - r| of order |g| only where g has turned against the values.
+   * the scale of a cell, g and r agree to O(h) and nothing changes; in a
+   * filament thinner than a cell g holds what r cannot, and the bound must
+   * leave it (with 1 the vortex and Zalesak's disk keep their shape errors
+   * to the last digit, doc/transport_in_flows.md).
    * Returns the number of nodes changed, over all ranks.
    */
   template <int dim>
