@@ -36,8 +36,9 @@ namespace vefs
                     "linear for a flow: gradient augmented keeps a "
                     "falling drop's area (-0.2 % against -7.8 %, test "
                     "drop_into_pool_2d) and the dam's front, but the 3D "
-                    "ball's Stokes solver stops converging at its impact; "
-                    "see doc/transport_in_flows.md.");
+                    "ball's Stokes solver stops converging as it spreads "
+                    "and its volume correction misses at its impact; see "
+                    "doc/transport_in_flows.md.");
       add_selection(
         prm,
         "Velocity interpolation",

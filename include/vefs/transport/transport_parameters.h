@@ -65,8 +65,8 @@ namespace vefs
     /**
      * An 'automatic' level set interpolation becomes gradient augmented for
      * a prescribed velocity (unless @p band_in_one_change_set: that
-     * placement keeps Q1 fields only), linear for a flow (where the 3D
-     * ball's Stokes solver failed with it, doc/transport_in_flows.md).
+     * placement keeps Q1 fields only), linear for a flow (the 3D ball's
+     * Stokes solver still fails with it, doc/transport_in_flows.md).
      * First of the transport's entries: the band placement's automatic
      * value depends on it.
      */
