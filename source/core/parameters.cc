@@ -151,8 +151,9 @@ namespace vefs
     // The entries whose best value depends on the material (the measured
     // settings of the elastic scenes: doc/bouncing_ball.md).
     const Regime regime = material.regime();
-    transport.resolve_level_set(mesh.band_placement ==
-                                BandPlacement::predicted_one_change);
+    transport.resolve_level_set(dimension,
+                                mesh.band_placement ==
+                                  BandPlacement::predicted_one_change);
     stress.resolve(regime, material.has_dumbbells());
     // Steps kept through impacts (the seed's fixed steps) reach CFL
     // numbers of tens: the band is then refined ahead of the surface
