@@ -12,12 +12,11 @@
 //  - 'automatic' entries resolve by the material's regime or, for the
 //    stress interpolation, by the velocity interpolation; the level set
 //    interpolation by the dimension, a prescribed velocity and the band
-//    placement; the velocity
-//    interpolation by the regime and the band placement; the remap
-//    distance by the level set interpolation, a prescribed velocity and
-//    the band placement; the band width and miss tolerance by the band
-//    placement; the band placement by the strain bound, the target CFL and
-//    the interpolation at the feet.
+//    placement; the velocity interpolation by the regime and the band
+//    placement; the remap distance by the level set interpolation, a
+//    prescribed velocity and the band placement; the band width and miss
+//    tolerance by the band placement; the band placement by the strain
+//    bound, the target CFL and the interpolation at the feet.
 
 #include "unit_test.h"
 
