@@ -14,7 +14,8 @@
 // eta_p = 2 Pa s), tau = 0.01 s. The reference uses a Gauss rule of 3
 // points, exact for these polynomial integrands as the code's own rule is:
 // the two agree to round-off, relative error below 1e-12 of the largest
-// entry. 1 and 2 ranks.
+// entry. 1 and 2 ranks. Then the lumped mass that 'Solver/Small cut cell
+// mass' adds to a cell with a small liquid part (check_small_cut_cell_mass).
 
 #include "flow_step_setup.h"
 #include "unit_test.h"
@@ -239,6 +240,114 @@ namespace
                              Utilities::MPI::max(mass_size, comm),
                            1e-12);
   }
+
+  // 'Solver/Small cut cell mass' m: the level set x - 0.251 cuts the cells
+  // of the column 0.25 < x < 0.5 (width 0.25) with the liquid fraction
+  // f = 0.004. Against the same cell without it (m = 0), each velocity row
+  // of such a cell must gain (m - f) rho/tau |K| / 2^dim on its diagonal
+  // and that mass times u* at its vertex on the right-hand side, nothing
+  // else.
+  template <int dim>
+  void
+  check_small_cut_cell_mass(std::ostream &out)
+  {
+    const MPI_Comm                            comm = MPI_COMM_WORLD;
+    parallel::distributed::Triangulation<dim> triangulation(comm);
+    Point<dim>                                upper;
+    std::vector<unsigned int>                 repetitions(dim, 2);
+    repetitions[0] = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      upper[d] = d == 0 ? 1 : 0.5;
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              repetitions,
+                                              Point<dim>(),
+                                              upper);
+    triangulation.refine_global(2);
+
+    unit_test::FlowStepSetup setup;
+    setup.cavity.cavity_lower.assign(dim, 0.);
+    setup.cavity.cavity_upper.assign(upper.begin_raw(), upper.end_raw());
+    setup.material.gravity.assign(dim, 0.);
+    setup.material.gravity[dim - 1]  = -9.81;
+    setup.material.solvent_viscosity = 0.5;
+    setup.stress.resolve(setup.material.regime(), false);
+    const double                   tau        = 0.01;
+    const vefs::FlowStepParameters parameters = setup.step(2, tau);
+    const vefs::Rheology<dim>      rheology(setup.material, setup.stress, 0.);
+    const vefs::FlowElements<dim>  elements(setup.flow, 2);
+
+    vefs::TransportedFields<dim> fields(triangulation, false, false, {});
+    fields.setup_dofs();
+    for (const auto &node : fields.nodes())
+      {
+        const Point<dim> &p = node.point;
+        fields.set_level_set(node, p[0] - 0.251);
+        Tensor<1, dim> u;
+        for (unsigned int d = 0; d < dim; ++d)
+          u[d] = std::sin(2 * p[0] + d) * std::cos(3 * p[1] - d);
+        fields.set_velocity(node, u);
+      }
+    fields.finalize();
+    const vefs::LiquidDomain<dim> domain(fields);
+
+    const FESystem<dim> fe(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1);
+    DoFHandler<dim>     dof_handler(triangulation);
+    dof_handler.distribute_dofs(fe);
+    const double small_mass          = 0.01;
+    setup.solver.small_cut_cell_mass = small_mass;
+    vefs::StokesCellSystem<dim> with_mass =
+      {parameters, rheology, fe, fields, domain, elements, tau};
+    vefs::StokesCellSystem<dim> without =
+      {parameters, rheology, fe, fields, domain, elements, tau};
+    const double mass_factor =
+      setup.material.density / parameters.mass_step(tau);
+
+    double             error = 0, size = 0, fraction = 0;
+    const unsigned int n = fe.n_dofs_per_cell();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned() ||
+            domain.location(cell) != vefs::LiquidDomain<dim>::Location::cut)
+          continue;
+        setup.solver.small_cut_cell_mass = small_mass;
+        with_mass.compute(cell);
+        setup.solver.small_cut_cell_mass = 0;
+        without.compute(cell);
+        fraction          = domain.fractions()[cell->active_cell_index()];
+        const double mass = (small_mass - fraction) * mass_factor *
+                            cell->measure() /
+                            GeometryInfo<dim>::vertices_per_cell;
+        const auto transport_cell = fields.cell_of(cell);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const auto [component, vertex] = fe.system_to_component_index(i);
+            const bool velocity            = component < dim;
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                const double expected = velocity && i == j ? mass : 0.;
+                error                 = std::max(error,
+                                 std::abs(with_mass.matrix(i, j) -
+                                          without.matrix(i, j) - expected));
+                size = std::max(size, std::abs(with_mass.matrix(i, j)));
+              }
+            const double expected =
+              velocity
+                ? mass * fields.velocity_at(transport_cell, vertex)[component]
+                : 0.;
+            error =
+              std::max(error,
+                       std::abs(with_mass.rhs(i) - without.rhs(i) - expected));
+          }
+      }
+    out << dim << "D, liquid fraction of the cut cells: "
+        << Utilities::MPI::max(fraction, comm) << '\n';
+    unit_test::check_below(out,
+                           std::to_string(dim) +
+                             "D, small cut cell mass, relative error",
+                           Utilities::MPI::max(error, comm) /
+                             Utilities::MPI::max(size, comm),
+                           1e-12);
+  }
 } // namespace
 
 int
@@ -249,5 +358,7 @@ main(int argc, char **argv)
     check<2>(out, true);
     check<3>(out, false);
     check<3>(out, true);
+    check_small_cut_cell_mass<2>(out);
+    check_small_cut_cell_mass<3>(out);
   });
 }

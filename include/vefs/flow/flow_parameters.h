@@ -91,6 +91,11 @@ namespace vefs
     bool         automatic_pressure_stabilization = true;
     double       free_surface_stabilization       = 0;
     double       ghost_penalty                    = 0.1;
+    /**
+     * Liquid fraction below which a cut cell's vertices get the lumped mass
+     * of the missing fraction of the whole cell, moving with u*; 0: off.
+     */
+    double small_cut_cell_mass = 0;
   };
 
   /**

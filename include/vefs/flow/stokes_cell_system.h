@@ -131,6 +131,15 @@ namespace vefs
       const typename DoFHandler<dim>::active_cell_iterator &transport_cell);
 
     /**
+     * The lumped mass, moving with u*, of the fraction of the whole cell
+     * that a cut cell's liquid part lacks to 'Solver/Small cut cell mass'.
+     */
+    void
+    add_small_cut_cell_mass(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const double                                          mass_factor);
+
+    /**
      * The terms on the free surface of a cut cell: the p = 0 penalty of the
      * Schur preconditioner and the free-surface stabilisation.
      */
@@ -177,8 +186,10 @@ namespace vefs
 
     std::vector<unsigned int> component;
     /** The vertex of each dof (FE_Q(1) in every component). */
-    std::vector<unsigned int>            vertex;
-    std::vector<Tensor<1, dim>>          u_star;
+    std::vector<unsigned int>   vertex;
+    std::vector<Tensor<1, dim>> u_star;
+    /** u* (with the old forces) at the vertices. */
+    std::vector<Tensor<1, dim>>          u_star_at_vertex;
     std::vector<SymmetricTensor<2, dim>> sigma_star;
     std::vector<Tensor<1, dim>>          div_sigma_star;
     std::vector<Tensor<2, dim>>          grad_u_star;
