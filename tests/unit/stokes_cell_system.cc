@@ -37,14 +37,16 @@ using namespace dealii;
 
 namespace
 {
+  /**
+   * The anisotropic test mesh: the box [0, 1] x [0, 0.5] (x [0, 0.5]) of
+   * 1 x 2 (x 2) cells refined twice; returns its upper corner.
+   */
   template <int dim>
-  void
-  check(std::ostream &out, const bool oldroyd_b)
+  Point<dim>
+  make_mesh(parallel::distributed::Triangulation<dim> &triangulation)
   {
-    const MPI_Comm                            comm = MPI_COMM_WORLD;
-    parallel::distributed::Triangulation<dim> triangulation(comm);
-    Point<dim>                                upper;
-    std::vector<unsigned int>                 repetitions(dim, 2);
+    Point<dim>                upper;
+    std::vector<unsigned int> repetitions(dim, 2);
     repetitions[0] = 1;
     for (unsigned int d = 0; d < dim; ++d)
       upper[d] = d == 0 ? 1 : 0.5;
@@ -53,6 +55,16 @@ namespace
                                               Point<dim>(),
                                               upper);
     triangulation.refine_global(2);
+    return upper;
+  }
+
+  template <int dim>
+  void
+  check(std::ostream &out, const bool oldroyd_b)
+  {
+    const MPI_Comm                            comm = MPI_COMM_WORLD;
+    parallel::distributed::Triangulation<dim> triangulation(comm);
+    const Point<dim>                          upper = make_mesh(triangulation);
 
     unit_test::FlowStepSetup  setup;
     vefs::CavityParameters   &cavity   = setup.cavity;
@@ -253,16 +265,7 @@ namespace
   {
     const MPI_Comm                            comm = MPI_COMM_WORLD;
     parallel::distributed::Triangulation<dim> triangulation(comm);
-    Point<dim>                                upper;
-    std::vector<unsigned int>                 repetitions(dim, 2);
-    repetitions[0] = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      upper[d] = d == 0 ? 1 : 0.5;
-    GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                              repetitions,
-                                              Point<dim>(),
-                                              upper);
-    triangulation.refine_global(2);
+    const Point<dim>                          upper = make_mesh(triangulation);
 
     unit_test::FlowStepSetup setup;
     setup.cavity.cavity_lower.assign(dim, 0.);
