@@ -5,8 +5,10 @@
 #include <deal.II/non_matching/quadrature_generator.h>
 
 #include <vefs/transport/liquid_domain.h>
+#include <vefs/transport/midpoint_fallback.h>
 
 #include <array>
+#include <vector>
 
 namespace vefs
 {
@@ -93,14 +95,16 @@ namespace vefs
     class CellCutter
     {
       /**
-       * How often the generator may split a cell before it falls back to a
-       * rule that counts whole sub-boxes, which makes the volume jump as the
-       * level set passes a saddle value and the volume correction miss for
-       * a step (doc/time_step_surface.md, step 4). Twelve remove that in 2D
-       * at no measurable cost; in 3D they took 1.9 times the run time and
-       * fewer only shrink the miss, so deal.II's four stay.
+       * How often the generator may split a cell before it falls back to
+       * its midpoint rule, whose points are replaced by the sub-box's
+       * corner estimate (midpoint_fallback.h). Twelve in 2D cost nothing
+       * measurable; in 3D they took 1.9 times the run time, so deal.II's
+       * four stay (doc/time_step_surface.md, step 4).
        */
       static constexpr unsigned int max_box_splits = dim == 2 ? 12 : 4;
+
+      /** Sub-boxes per direction of a midpoint-fallback box. */
+      static constexpr unsigned int n_fallback_subdivisions = 4;
 
     public:
       using Location = typename LiquidDomain<dim>::Location;
@@ -138,13 +142,25 @@ namespace vefs
         generator.generate(CellLevelSet<dim>(values),
                            BoundingBox<dim>(
                              std::make_pair(Point<dim>(), upper)));
+        replace_midpoint_fallback();
         return Location::cut;
       }
 
       const Quadrature<dim> &
       inside() const
       {
-        return generator.get_inside_quadrature();
+        return patched ? patched_inside : generator.get_inside_quadrature();
+      }
+
+      /**
+       * The derivative of inside_fraction() with respect to the shift that
+       * the sub-boxes of the midpoint fallback contribute (the surface
+       * quadrature lacks their piece of surface).
+       */
+      double
+      fallback_derivative() const
+      {
+        return patched ? patched_derivative : 0.;
       }
 
       /** The liquid fraction of the cut cell: inside()'s weights. */
@@ -171,6 +187,53 @@ namespace vefs
       }
 
     private:
+      /**
+       * Replace the generator's midpoint-fallback points, inside or outside,
+       * by their boxes' corner quadratures (midpoint_fallback.h): the volume
+       * stays continuous in the shift, so the volume correction can meet
+       * its target.
+       */
+      void
+      replace_midpoint_fallback()
+      {
+        patched = false;
+        std::vector<Point<dim>> points;
+        std::vector<double>     weights;
+        double                  derivative = 0;
+        const CellLevelSet<dim> level_set(values);
+        const auto              collect = [&](const Quadrature<dim> &rule,
+                                 const bool             keep_others) {
+          for (unsigned int q = 0; q < rule.size(); ++q)
+            {
+              const auto box = midpoint_fallback_box(rule.point(q),
+                                                     rule.weight(q),
+                                                     max_box_splits);
+              if (box)
+                {
+                  patched = true;
+                  append_corner_quadrature(level_set,
+                                           *box,
+                                           n_fallback_subdivisions,
+                                           points,
+                                           weights,
+                                           derivative);
+                }
+              else if (keep_others)
+                {
+                  points.push_back(rule.point(q));
+                  weights.push_back(rule.weight(q));
+                }
+            }
+        };
+        collect(generator.get_inside_quadrature(), true);
+        collect(generator.get_outside_quadrature(), false);
+        if (patched)
+          {
+            patched_inside     = Quadrature<dim>(points, weights);
+            patched_derivative = derivative;
+          }
+      }
+
       const TransportedFields<dim> &fields;
       const double                  shift;
       // The generator keeps a reference to its 1D rule.
@@ -178,6 +241,9 @@ namespace vefs
       NonMatching::QuadratureGenerator<dim>             generator;
       Point<dim>                                        upper;
       std::array<double, CellLevelSet<dim>::n_vertices> values;
+      bool                                              patched = false;
+      Quadrature<dim>                                   patched_inside;
+      double                                            patched_derivative = 0;
     };
   } // namespace
 
@@ -227,6 +293,7 @@ namespace vefs
               for (unsigned int q = 0; q < surface.size(); ++q)
                 derivative -= surface.weight(q) /
                               level_set.gradient(surface.point(q)).norm();
+              derivative += cutter.fallback_derivative();
               result.volume += cutter.inside_fraction() * cell->measure();
               result.derivative += derivative * cell->measure();
             }

@@ -10,6 +10,11 @@
 //   -0.01 up to the Q1 interpolation error of the distance, which moves the
 //   surface by at most dim h^2 / (8 R) (second derivatives of r at most
 //   1/R near it), at both radii: bound dim h^2 / (4 R).
+// - An inflection at the surface, psi = (x_last - 1/2)^3 - 1/1000, target
+//   the volume below x_last = 1/2, a plane of vertices: the volume is steep
+//   in the shift near the root and flat away from it, like a cube root,
+//   where Newton's method alone alternates across the root with growing
+//   steps. The shift is 1/1000 and the volume the target to round-off.
 
 #include "unit_test.h"
 
@@ -100,5 +105,20 @@ main(int argc, char **argv)
       4. / 3 * numbers::PI * std::pow(R_target, 3),
       R - R_target,
       3 * h3 * h3 / (4 * R));
+    const double a = 1e-3;
+    check<2>(
+      out,
+      "inflection",
+      [=](const Point<2> &p) { return std::pow(p[1] - 0.5, 3) - a; },
+      0.5,
+      a,
+      1e-12);
+    check<3>(
+      out,
+      "inflection",
+      [=](const Point<3> &p) { return std::pow(p[2] - 0.5, 3) - a; },
+      0.5,
+      a,
+      1e-12);
   });
 }
