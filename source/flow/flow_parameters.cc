@@ -189,9 +189,7 @@ namespace vefs
         "mass alone, and the Stokes solver stalls (the 3D ball with the "
         "gradient-augmented level set, step 151: 2,038 Krylov iterations "
         "in the step with 0, 100 with 0.01, where it then runs to its end; "
-        "see doc/time_step_flow.md, step 7). 0 (off) by default: the "
-        "default level sets (linear in 3D flows) run without it, and 0.01 "
-        "moves the 2D flow tests' outputs in their last digits.",
+        "see doc/time_step_flow.md, step 7). 0 switches it off.",
         Patterns::Double(0, 1));
     }
     prm.leave_subsection();

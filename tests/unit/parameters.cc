@@ -402,12 +402,13 @@ main()
   }
 
   {
-    // 'Level set interpolation = automatic': gradient augmented in 2D and
-    // for a prescribed velocity, linear for a 3D flow and with 'Band
-    // placement = predicted, one change'. Explicit values stay.
+    // 'Level set interpolation = automatic': gradient augmented, linear
+    // with 'Band placement = predicted, one change', set or automatic (a 3D
+    // flow with the seed's fixed steps). Explicit values stay.
     const auto level_set = [](const unsigned int dimension,
                               const std::string &transport,
-                              const std::string &mesh) {
+                              const std::string &mesh,
+                              const std::string &extra = "") {
       const std::string cavity_3d =
         "set Gravity = 0, 0, 0\nsubsection Cavity\n"
         "  set Lower corner = 0, 0, 0\n  set Upper corner = 1, 1, 1\n"
@@ -417,7 +418,8 @@ main()
       write("level_set.prm",
             "set Dimension = " + std::to_string(dimension) + "\n" +
               (dimension == 3 ? cavity_3d : "") + "subsection Transport\n" +
-              transport + "end\nsubsection Mesh refinement\n" + mesh + "end\n");
+              transport + "end\nsubsection Mesh refinement\n" + mesh + "end\n" +
+              extra);
       vefs::Parameters parameters;
       ParameterHandler prm;
       parameters.declare(prm);
@@ -442,6 +444,21 @@ main()
         << level_set(3, "  set Prescribed velocity = 1; 0; 0\n", "") << '\n';
     out << "the same, 2D, band predicted, one change: "
         << level_set(2, "", "  set Band placement = predicted, one change\n")
+        << '\n';
+    // The seed's soft solid (weight strain 46.7: linear velocity).
+    const std::string fixed_steps =
+      "subsection Time\n  set Strain bound = local\nend\n"
+      "subsection Material\n  set Alpha = 0\n  set Polymer viscosity = 0.1\n"
+      "  set Relaxation time = 0.005\nend\n";
+    out << "the same, 3D flow, the seed's fixed steps: "
+        << level_set(3, "", "", fixed_steps) << '\n';
+    out << "the same, 2D flow, the seed's fixed steps: "
+        << level_set(2, "", "", fixed_steps) << '\n';
+    out << "the same, 3D, prescribed velocity, fixed steps: "
+        << level_set(3,
+                     "  set Prescribed velocity = 1; 0; 0\n",
+                     "",
+                     fixed_steps)
         << '\n';
     out << "linear, 2D flow: "
         << level_set(2, "  set Level set interpolation = linear\n", "") << '\n';

@@ -95,7 +95,7 @@ namespace vefs
      * Liquid fraction below which a cut cell's vertices get the lumped mass
      * of the missing fraction of the whole cell, moving with u*; 0: off.
      */
-    double small_cut_cell_mass = 0;
+    double small_cut_cell_mass = 0.01;
   };
 
   /**
