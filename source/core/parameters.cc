@@ -151,19 +151,15 @@ namespace vefs
     // The entries whose best value depends on the material (the measured
     // settings of the elastic scenes: doc/bouncing_ball.md).
     const Regime regime = material.regime();
+    transport.resolve_level_set(dimension,
+                                mesh.band_placement ==
+                                  BandPlacement::predicted_one_change);
+    stress.resolve(regime, material.has_dumbbells());
     // Steps kept through impacts (the seed's fixed steps) reach CFL
     // numbers of tens: the band is then refined ahead of the surface
-    // (doc/bouncing_ball_3d_study.md, "Settings of the fine scenes"). In a
-    // 3D flow a band widened by tens of cells instead is out of reach, and
-    // its one change per step keeps Q1 fields: the level set stays linear.
+    // (doc/bouncing_ball_3d_study.md, "Settings of the fine scenes").
     const bool steps_fixed =
       !time.strain_bound_shortens_step && time.target_cfl == 0;
-    const bool band_in_one_change =
-      mesh.band_placement == BandPlacement::predicted_one_change ||
-      (mesh.band_placement == BandPlacement::automatic && steps_fixed &&
-       dimension == 3 && !transport.velocity_is_prescribed());
-    transport.resolve_level_set(band_in_one_change);
-    stress.resolve(regime, material.has_dumbbells());
     mesh.resolve(steps_fixed && transport.feet_linear_without_remap());
     if (time.automatic_max_strain)
       time.max_strain_per_step = regime == Regime::elastic_solid ? 0.25 : 0;

@@ -31,13 +31,13 @@ namespace vefs
                     "along the characteristics as well, Nave, Rosales & "
                     "Seibold 2010, with a four-stage trace of the feet; "
                     "9x smaller L1 error on the Rider-Kothe vortex at "
-                    "h = 1/128, CFL 5). automatic: gradient augmented "
-                    "(a falling drop keeps its area to 0.2 % instead of "
-                    "7.8 %, test drop_into_pool_2d), but linear with "
-                    "'Band placement = predicted, one change', which keeps "
-                    "Q1 fields, and so in a 3D flow with the seed's fixed "
-                    "steps ('Strain bound = local', no 'Target CFL'), "
-                    "whose automatic band is placed that way; see "
+                    "h = 1/128, CFL 5). automatic: gradient augmented in "
+                    "2D and for a prescribed velocity (a falling drop "
+                    "keeps its area to 0.2 % instead of 7.8 %, test "
+                    "drop_into_pool_2d), linear for a 3D flow (there "
+                    "gradient augmented took 1.3-2 times the wall time "
+                    "and was no closer to the 3D dam's reference) and "
+                    "with 'Band placement = predicted, one change'; see "
                     "doc/transport_in_flows.md.");
       add_selection(
         prm,
@@ -162,12 +162,14 @@ namespace vefs
   }
 
   void
-  TransportParameters::resolve_level_set(const bool band_in_one_change)
+  TransportParameters::resolve_level_set(const unsigned int dimension,
+                                         const bool band_in_one_change_set)
   {
     if (level_set_interpolation == LevelSetInterpolation::automatic)
-      level_set_interpolation = band_in_one_change
-                                  ? LevelSetInterpolation::linear
-                                  : LevelSetInterpolation::gradient_augmented;
+      level_set_interpolation =
+        (dimension == 2 || velocity_is_prescribed()) && !band_in_one_change_set
+          ? LevelSetInterpolation::gradient_augmented
+          : LevelSetInterpolation::linear;
   }
 
   void

@@ -402,9 +402,9 @@ main()
   }
 
   {
-    // 'Level set interpolation = automatic': gradient augmented, linear
-    // with 'Band placement = predicted, one change', set or automatic (a 3D
-    // flow with the seed's fixed steps). Explicit values stay.
+    // 'Level set interpolation = automatic': gradient augmented in 2D and
+    // for a prescribed velocity, linear for a 3D flow and with 'Band
+    // placement = predicted, one change'. Explicit values stay.
     const auto level_set = [](const unsigned int dimension,
                               const std::string &transport,
                               const std::string &mesh,

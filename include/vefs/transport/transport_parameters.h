@@ -10,7 +10,7 @@ namespace vefs
   /** How the level set is interpolated at the feet of the characteristics. */
   enum class LevelSetInterpolation
   {
-    /** By the band placement: TransportParameters::resolve_level_set(). */
+    /** By the dimension: TransportParameters::resolve_level_set(). */
     automatic,
     linear,
     cubic,
@@ -63,15 +63,17 @@ namespace vefs
     std::string exact_final_level_set = "";
 
     /**
-     * An 'automatic' level set interpolation becomes gradient augmented,
-     * or linear where the band is placed 'predicted, one change' (@p
-     * band_in_one_change: that placement keeps Q1 fields only;
-     * doc/transport_in_flows.md).
+     * An 'automatic' level set interpolation becomes gradient augmented in
+     * 2D (@p dimension) and for a prescribed velocity, linear for a 3D
+     * flow (there it costs more and was no closer to the 3D dam's
+     * reference, doc/transport_in_flows.md) and with @p
+     * band_in_one_change_set (that placement keeps Q1 fields only).
      * First of the transport's entries: the band placement's automatic
      * value depends on it.
      */
     void
-    resolve_level_set(const bool band_in_one_change);
+    resolve_level_set(const unsigned int dimension,
+                      const bool         band_in_one_change_set);
 
     /**
      * 'automatic' velocity interpolation becomes cubic for a stiff
