@@ -196,7 +196,21 @@ namespace vefs
       void
       replace_midpoint_fallback()
       {
+        // Most cut cells have none: they keep the generator's rules
+        // without a copy (this runs for every cut cell of every volume
+        // measurement).
+        const auto has_fallback = [](const Quadrature<dim> &rule) {
+          for (unsigned int q = 0; q < rule.size(); ++q)
+            if (midpoint_fallback_box(rule.point(q),
+                                      rule.weight(q),
+                                      max_box_splits))
+              return true;
+          return false;
+        };
         patched = false;
+        if (!has_fallback(generator.get_inside_quadrature()) &&
+            !has_fallback(generator.get_outside_quadrature()))
+          return;
         std::vector<Point<dim>> points;
         std::vector<double>     weights;
         double                  derivative = 0;
