@@ -232,33 +232,48 @@ namespace vefs
         slopes[d][1][1] = -t * (2 - 3 * t);
       }
 
-    double value = 0;
-    double lower = std::numeric_limits<double>::max();
-    double upper = std::numeric_limits<double>::lowest();
+    // The fields and the derivatives share one partitioner: one
+    // global-to-local translation per vertex. The weight of mode s at vertex v
+    // is a product of one factor per direction; its x_e-derivative replaces
+    // factor e by its slope (the products before and after e, kept as prefix
+    // and suffix products).
+    const auto &partitioner = *derivatives[0].get_partitioner();
+    double      value       = 0;
+    double      lower       = std::numeric_limits<double>::max();
+    double      upper       = std::numeric_limits<double>::lowest();
     if (gradient)
       *gradient = Tensor<1, dim>();
     for (const unsigned int v : cell->vertex_indices())
       {
-        const auto   dof = cell->vertex_dof_index(v, c);
-        const double f_v = fields.value_at(cell, v, c);
+        const unsigned int local =
+          partitioner.global_to_local(cell->vertex_dof_index(v, c));
+        const double f_v = fields.local_value(local);
         lower            = std::min(lower, f_v);
         upper            = std::max(upper, f_v);
         for (unsigned int s = 0; s <= n_derivatives; ++s)
           {
-            const double nodal  = s == 0 ? f_v : derivatives[s - 1](dof);
-            double       weight = 1;
+            const double nodal =
+              s == 0 ? f_v : derivatives[s - 1].local_element(local);
+            double factor[dim], slope[dim];
             for (unsigned int d = 0; d < dim; ++d)
-              weight *= basis[d][(s >> d) & 1][(v >> d) & 1];
-            value += weight * nodal;
+              {
+                factor[d] = basis[d][(s >> d) & 1][(v >> d) & 1];
+                slope[d]  = slopes[d][(s >> d) & 1][(v >> d) & 1];
+              }
+            double before[dim + 1];
+            before[0] = 1;
+            for (unsigned int d = 0; d < dim; ++d)
+              before[d + 1] = before[d] * factor[d];
+            value += before[dim] * nodal;
             if (gradient)
-              for (unsigned int e = 0; e < dim; ++e)
-                {
-                  double slope = 1;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    slope *=
-                      (d == e ? slopes : basis)[d][(s >> d) & 1][(v >> d) & 1];
-                  (*gradient)[e] += slope * nodal;
-                }
+              {
+                double after = nodal;
+                for (unsigned int e = dim; e-- > 0;)
+                  {
+                    (*gradient)[e] += before[e] * slope[e] * after;
+                    after *= factor[e];
+                  }
+              }
           }
       }
     return limited ? std::clamp(value, lower, upper) : value;

@@ -43,23 +43,33 @@ namespace vefs
         return true;
       };
 
+      // psi at the lattice points first: each is the end of up to 2 dim
+      // edges.
       const unsigned int n        = n_sub_cells + 1;
       unsigned int       n_points = 1;
       for (unsigned int d = 0; d < dim; ++d)
         n_points *= n;
+      const auto lattice_point = [&](unsigned int i) {
+        Point<dim> xi;
+        for (unsigned int d = 0; d < dim; ++d, i /= n)
+          xi[d] = double(i % n) / n_sub_cells;
+        return xi;
+      };
+      std::vector<double> values(n_points);
+      for (unsigned int i = 0; i < n_points; ++i)
+        values[i] = interpolate(lattice_point(i));
+
       for (unsigned int i = 0; i < n_points; ++i)
         {
-          Point<dim>   xi;
-          unsigned int rest = i;
-          for (unsigned int d = 0; d < dim; ++d, rest /= n)
-            xi[d] = double(rest % n) / n_sub_cells;
-          const double a = interpolate(xi);
-          for (unsigned int d = 0; d < dim; ++d)
+          const Point<dim> xi = lattice_point(i);
+          const double     a  = values[i];
+          // The next lattice point in direction d is n^d further.
+          for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= n)
             if (xi[d] < 1 - 1e-12 && owns_edge(xi, d))
               {
                 Point<dim> next = xi;
                 next[d] += 1. / n_sub_cells;
-                const double b = interpolate(next);
+                const double b = values[i + stride];
                 if ((a < 0) != (b < 0))
                   {
                     const Point<dim> zero = xi + a / (a - b) * (next - xi);
