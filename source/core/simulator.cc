@@ -150,6 +150,10 @@ namespace vefs
         advance_velocity(domain);
         time.end_step();
         report(domain);
+        // 10. What the new velocity carries out through open walls leaves
+        // the volume the next advection keeps (after report(): this step's
+        // volume_change compares with this step's expected volume).
+        surface->remove_outflow(velocity->outflow(time.tau()));
         if (const auto end = checkpoint_if_due(steps_done))
           return *end;
       }
@@ -419,7 +423,6 @@ namespace vefs
       }
     if (!failure.empty())
       stop(time.step(), failure, domain, false);
-    surface->remove_outflow(velocity->outflow(time.tau()));
   }
 
   template <int dim>

@@ -807,6 +807,27 @@ namespace vefs
 
   template <int dim>
   double
+  StokesStep<dim>::wet_face_flux(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const unsigned int                                    f) const
+  {
+    const Quadrature<dim> &wet = domain->cut_cell(cell).wet_boundary_faces[f];
+    if (wet.size() == 0)
+      return 0;
+    const unsigned int d = f / 2;
+    FEValues<dim>      values(fe_collection[liquid_index], wet, update_values);
+    values.reinit(cell);
+    std::vector<Tensor<1, dim>> u(wet.size());
+    values[FEValuesExtractors::Vector(0)].get_function_values(solution, u);
+    double flux = 0;
+    for (unsigned int q = 0; q < wet.size(); ++q)
+      flux += u[q][d] * wet.weight(q);
+    // Outward normal +-e_d; the reference face maps to the face's area.
+    return (f % 2 == 0 ? -1. : 1.) * flux * cell->face(f)->measure();
+  }
+
+  template <int dim>
+  double
   StokesStep<dim>::outflow_rate() const
   {
     const QGauss<dim - 1>            face_quadrature(2);
@@ -827,12 +848,17 @@ namespace vefs
                parameters.cavity.wall_type[cell->face(f)->boundary_id()] ==
                  WallType::open))
             {
-              face_values.reinit(cell, f);
-              face_values[velocity].get_function_values(solution, u);
-              for (const unsigned int q :
-                   face_values.quadrature_point_indices())
-                rate +=
-                  u[q] * face_values.normal_vector(q) * face_values.JxW(q);
+              if (domain->location(cell) == LiquidDomain<dim>::Location::cut)
+                rate += wet_face_flux(cell, f);
+              else
+                {
+                  face_values.reinit(cell, f);
+                  face_values[velocity].get_function_values(solution, u);
+                  for (const unsigned int q :
+                       face_values.quadrature_point_indices())
+                    rate +=
+                      u[q] * face_values.normal_vector(q) * face_values.JxW(q);
+                }
             }
     return Utilities::MPI::sum(rate, comm);
   }

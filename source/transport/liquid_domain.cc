@@ -1,5 +1,6 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/function.h>
+#include <deal.II/base/qprojector.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/hp/q_collection.h>
 #include <deal.II/non_matching/quadrature_generator.h>
@@ -115,6 +116,7 @@ namespace vefs
         , gauss_rule(QGauss<1>(LiquidDomain<dim>::n_gauss_points))
         , generator(gauss_rule,
                     NonMatching::AdditionalQGeneratorData(max_box_splits))
+        , face_generator(gauss_rule)
       {
         for (unsigned int d = 0; d < dim; ++d)
           upper[d] = 1;
@@ -177,6 +179,25 @@ namespace vefs
       surface() const
       {
         return generator.get_surface_quadrature();
+      }
+
+      /**
+       * The liquid part of face @p f of the cut cell: points on the face of
+       * the reference cell, weights of the reference face.
+       */
+      Quadrature<dim>
+      wet_face(const unsigned int f)
+      {
+        face_generator.generate(CellLevelSet<dim>(values),
+                                BoundingBox<dim>(
+                                  std::make_pair(Point<dim>(), upper)),
+                                f);
+        // The generator's face coordinates are deal.II's (in 3D (z, x) on
+        // the faces normal to y), which QProjector maps into the cell.
+        return QProjector<dim>::project_to_face(
+          ReferenceCells::get_hypercube<dim>(),
+          face_generator.get_inside_quadrature(),
+          f);
       }
 
       /** The cut cell's level set, for the quadratures' points. */
@@ -253,6 +274,7 @@ namespace vefs
       // The generator keeps a reference to its 1D rule.
       const hp::QCollection<1>                          gauss_rule;
       NonMatching::QuadratureGenerator<dim>             generator;
+      NonMatching::FaceQuadratureGenerator<dim>         face_generator;
       Point<dim>                                        upper;
       std::array<double, CellLevelSet<dim>::n_vertices> values;
       bool                                              patched = false;
@@ -278,7 +300,15 @@ namespace vefs
           else if (locations[index] == Location::cut)
             {
               cut_index[index] = cut_cells.size();
-              cut_cells.push_back({cutter.inside(), cutter.surface()});
+              cut_cells.emplace_back();
+              CutCell &cut_cell = cut_cells.back();
+              cut_cell.inside   = cutter.inside();
+              cut_cell.surface  = cutter.surface();
+              // For what crosses open and velocity walls (outflow).
+              if (cell->at_boundary())
+                for (const unsigned int f : cell->face_indices())
+                  if (cell->at_boundary(f))
+                    cut_cell.wet_boundary_faces[f] = cutter.wet_face(f);
               fraction[index] = cutter.inside_fraction();
             }
         }

@@ -145,8 +145,9 @@ namespace vefs
 
     /**
      * Net rate (m^3/s, m^2/s in 2D) at which liquid leaves through the
-     * cavity walls: the integral of u.n over the liquid's faces on them
-     * (non-zero on 'velocity' and 'open' walls only).
+     * cavity walls: the integral of u.n over the liquid's faces on them, of
+     * a cut cell over the wet part of the face (non-zero on 'velocity' and
+     * 'open' walls only).
      */
     double
     outflow_rate() const;
@@ -172,6 +173,14 @@ namespace vefs
     }
 
   private:
+    /**
+     * The integral of u.n over the wet part of boundary face @p f of the
+     * cut cell @p cell.
+     */
+    double
+    wet_face_flux(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                  const unsigned int f) const;
+
     static constexpr unsigned int liquid_index = 0;
     static constexpr unsigned int empty_index  = 1;
 

@@ -1,6 +1,7 @@
 #ifndef vefs_liquid_domain_h
 #define vefs_liquid_domain_h
 
+#include <deal.II/base/geometry_info.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/vector.h>
@@ -8,6 +9,8 @@
 
 #include <vefs/compat/box_q1_values.h>
 #include <vefs/fields/transported_fields.h>
+
+#include <array>
 
 namespace vefs
 {
@@ -33,11 +36,18 @@ namespace vefs
       full
     };
 
-    /** The liquid part and the free surface of one cut cell. */
+    /**
+     * The liquid part and the free surface of one cut cell, and the liquid
+     * part of each of its faces at the cavity's boundary (empty for the
+     * other faces): points on the face of the reference cell, weights of
+     * the reference face.
+     */
     struct CutCell
     {
       Quadrature<dim>                             inside;
       NonMatching::ImmersedSurfaceQuadrature<dim> surface;
+      std::array<Quadrature<dim>, GeometryInfo<dim>::faces_per_cell>
+        wet_boundary_faces;
     };
 
     /** Classify the owned and ghost cells of the mesh of @p fields. */
