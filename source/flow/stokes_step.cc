@@ -811,7 +811,7 @@ namespace vefs
     const typename DoFHandler<dim>::active_cell_iterator &cell,
     const unsigned int                                    f) const
   {
-    const Quadrature<dim> &wet = domain->cut_cell(cell).wet_boundary_faces[f];
+    const Quadrature<dim> &wet = domain->cut_cell(cell).wet_boundary_face(f);
     if (wet.size() == 0)
       return 0;
     const unsigned int d = f / 2;

@@ -308,7 +308,9 @@ namespace vefs
               if (cell->at_boundary())
                 for (const unsigned int f : cell->face_indices())
                   if (cell->at_boundary(f))
-                    cut_cell.wet_boundary_faces[f] = cutter.wet_face(f);
+                    cut_cell.wet_boundary_faces.emplace_back(f,
+                                                             cutter.wet_face(
+                                                               f));
               fraction[index] = cutter.inside_fraction();
             }
         }

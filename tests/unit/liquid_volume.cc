@@ -99,7 +99,7 @@ namespace
               // Full cells: the whole face, by a Gauss rule on it.
               const Quadrature<dim> rule =
                 domain.location(cell) == vefs::LiquidDomain<dim>::Location::cut
-                  ? domain.cut_cell(cell).wet_boundary_faces[f]
+                  ? domain.cut_cell(cell).wet_boundary_face(f)
                   : QProjector<dim>::project_to_face(
                       ReferenceCells::get_hypercube<dim>(),
                       gauss,

@@ -1,7 +1,6 @@
 #ifndef vefs_liquid_domain_h
 #define vefs_liquid_domain_h
 
-#include <deal.II/base/geometry_info.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/vector.h>
@@ -10,7 +9,8 @@
 #include <vefs/compat/box_q1_values.h>
 #include <vefs/fields/transported_fields.h>
 
-#include <array>
+#include <utility>
+#include <vector>
 
 namespace vefs
 {
@@ -38,16 +38,26 @@ namespace vefs
 
     /**
      * The liquid part and the free surface of one cut cell, and the liquid
-     * part of each of its faces at the cavity's boundary (empty for the
-     * other faces): points on the face of the reference cell, weights of
-     * the reference face.
+     * part of each of its faces at the cavity's boundary: points on the face
+     * of the reference cell, weights of the reference face.
      */
     struct CutCell
     {
       Quadrature<dim>                             inside;
       NonMatching::ImmersedSurfaceQuadrature<dim> surface;
-      std::array<Quadrature<dim>, GeometryInfo<dim>::faces_per_cell>
-        wet_boundary_faces;
+      /** (face number, its liquid part), for the boundary faces only. */
+      std::vector<std::pair<unsigned int, Quadrature<dim>>> wet_boundary_faces;
+
+      /** The liquid part of boundary face @p f. */
+      const Quadrature<dim> &
+      wet_boundary_face(const unsigned int f) const
+      {
+        for (const auto &[face, rule] : wet_boundary_faces)
+          if (face == f)
+            return rule;
+        AssertThrow(false, ExcMessage("Not a face at the boundary."));
+        return wet_boundary_faces.front().second;
+      }
     };
 
     /** Classify the owned and ghost cells of the mesh of @p fields. */
