@@ -18,6 +18,7 @@
 #include <Epetra_Map.h>
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
+#include <vefs/compat/box_q1_values.h>
 #include <vefs/compat/owned_rows_matrix.h>
 #include <vefs/flow/flow_numbering.h>
 #include <vefs/flow/ghost_penalty.h>
@@ -814,14 +815,17 @@ namespace vefs
     const Quadrature<dim> &wet = domain->cut_cell(cell).wet_boundary_face(f);
     if (wet.size() == 0)
       return 0;
-    const unsigned int d = f / 2;
-    FEValues<dim>      values(fe_collection[liquid_index], wet, update_values);
-    values.reinit(cell);
-    std::vector<Tensor<1, dim>> u(wet.size());
-    values[FEValuesExtractors::Vector(0)].get_function_values(solution, u);
+    // The Q1 velocity normal to the face at the wet points (the cut cells'
+    // own Q1 values, as on their liquid parts).
+    const unsigned int                                       d = f / 2;
+    std::array<double, GeometryInfo<dim>::vertices_per_cell> normal_velocity;
+    for (const unsigned int v : cell->vertex_indices())
+      normal_velocity[v] = solution(cell->vertex_dof_index(v, d, liquid_index));
+    BoxCellValues<dim> values;
+    values.reinit(cell, wet);
     double flux = 0;
     for (unsigned int q = 0; q < wet.size(); ++q)
-      flux += u[q][d] * wet.weight(q);
+      flux += values.value(normal_velocity, q) * wet.weight(q);
     // Outward normal +-e_d; the reference face maps to the face's area.
     return (f % 2 == 0 ? -1. : 1.) * flux * cell->face(f)->measure();
   }
