@@ -35,7 +35,7 @@ namespace vefs
                     "2D and for a prescribed velocity (a falling drop "
                     "keeps its area to 0.2 % instead of 7.8 %, test "
                     "drop_into_pool_2d), linear for a 3D flow (there "
-                    "gradient augmented took 1.3-2 times the wall time "
+                    "gradient augmented took 1.1-1.6 times the wall time "
                     "and was no closer to the 3D dam's reference) and "
                     "with 'Band placement = predicted, one change'; see "
                     "doc/transport_in_flows.md.");
