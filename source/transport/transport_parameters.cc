@@ -118,9 +118,9 @@ namespace vefs
         "velocity' (the transport benchmarks), 20 in 2D (Rider-Kothe vortex "
         "from a signed distance at 1/128, CFL 5: L1 6.7e-4 with 20, 1.35e-3 "
         "with 10, 2.8e-3 with 10 and the distance restored up to the cut "
-        "cells) and 10 in 3D (the 3D deformation at 1/128, CFL 5: relative "
-        "L1 0.017, and 0.028 with 20 and its level set kept within 40 "
-        "cells, on three times the cells); 0 otherwise: with "
+        "cells) and 14 in 3D (the 3D deformation at 1/128, CFL 5: relative "
+        "L1 0.0155 with 14, 0.0172 with 10, for 1.5 times the CPU time; at "
+        "1/64 0.039 with 14, 0.106 with 16); 0 otherwise: with "
         "the linear level set the volume correction then misses at remap "
         "steps, in flows a remap has not been measured to pay, and both "
         "predicted band placements adapt the mesh at every step.");
@@ -187,7 +187,7 @@ namespace vefs
                            level_set_interpolation ==
                              LevelSetInterpolation::gradient_augmented &&
                            !band_predicted
-                         ? (dimension == 2 ? 20 : 10)
+                         ? (dimension == 2 ? 20 : 14)
                          : 0;
     if (stress_interpolation == StressInterpolation::automatic)
       stress_interpolation =

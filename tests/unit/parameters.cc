@@ -465,7 +465,7 @@ main()
   }
 
   {
-    // 'Remap distance = automatic': 20 in 2D and 10 in 3D for the gradient
+    // 'Remap distance = automatic': 20 in 2D and 14 in 3D for the gradient
     // augmented level set carried by a prescribed velocity, unless the band
     // is predicted; 0 otherwise. Redistancing keeps the level set within
     // twice the remap distance in 2D, nowhere in 3D. 'Band width' and 'Band

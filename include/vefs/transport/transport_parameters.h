@@ -84,11 +84,11 @@ namespace vefs
      * interpolation at the feet"). 'automatic' stress interpolation then
      * becomes limited cubic where the velocity is interpolated by (limited)
      * cubic, linear otherwise: an elastic wave carries its energy in both
-     * fields. An 'automatic' remap distance becomes 20 in 2D and 10 in 3D
+     * fields. An 'automatic' remap distance becomes 20 in 2D and 14 in 3D
      * (@p dimension) for the gradient augmented level set carried by a
      * prescribed velocity (unless @p band_predicted: that placement adapts
      * the mesh at every step), 0 otherwise (measured: doc/transport.md,
-     * "Not in 3D").
+     * "In 3D").
      */
     void
     resolve(const bool         band_predicted,
@@ -99,7 +99,7 @@ namespace vefs
     /**
      * Finest cells from the surface within which redistancing leaves the
      * level set as transported in @p dimension: twice the remap distance in
-     * 2D, none in 3D (doc/transport.md, "Not in 3D").
+     * 2D, none in 3D (doc/transport.md, "In 3D").
      */
     double
     kept_at_redistancing(const unsigned int dimension) const
