@@ -1,3 +1,4 @@
+#include <deal.II/base/qprojector.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -808,15 +809,15 @@ namespace vefs
 
   template <int dim>
   double
-  StokesStep<dim>::wet_face_flux(
+  StokesStep<dim>::face_flux(
     const typename DoFHandler<dim>::active_cell_iterator &cell,
-    const unsigned int                                    f) const
+    const unsigned int                                    f,
+    const Quadrature<dim>                                &wet) const
   {
-    const Quadrature<dim> &wet = domain->cut_cell(cell).wet_boundary_face(f);
     if (wet.size() == 0)
       return 0;
-    // The Q1 velocity normal to the face at the wet points (the cut cells'
-    // own Q1 values, as on their liquid parts).
+    // The Q1 velocity normal to the face at the wet points (the cells' own
+    // Q1 values, as on the liquid parts of cut cells).
     const unsigned int                                       d = f / 2;
     std::array<double, GeometryInfo<dim>::vertices_per_cell> normal_velocity;
     for (const unsigned int v : cell->vertex_indices())
@@ -834,14 +835,15 @@ namespace vefs
   double
   StokesStep<dim>::outflow_rate() const
   {
-    const QGauss<dim - 1>            face_quadrature(2);
-    FEFaceValues<dim>                face_values(fe_collection[liquid_index],
-                                  face_quadrature,
-                                  update_values | update_normal_vectors |
-                                    update_JxW_values);
-    const FEValuesExtractors::Vector velocity(0);
-    std::vector<Tensor<1, dim>>      u(face_quadrature.size());
-    double                           rate = 0;
+    // A whole face by the Gauss rule on it, exact for the Q1 velocity; the
+    // wet part of a cut cell's face by the rule of its liquid domain.
+    std::vector<Quadrature<dim>> whole_faces;
+    for (const unsigned int f : GeometryInfo<dim>::face_indices())
+      whole_faces.push_back(
+        QProjector<dim>::project_to_face(ReferenceCells::get_hypercube<dim>(),
+                                         QGauss<dim - 1>(2),
+                                         f));
+    double rate = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->at_boundary() &&
           domain->has_liquid(cell))
@@ -851,19 +853,12 @@ namespace vefs
                  WallType::velocity ||
                parameters.cavity.wall_type[cell->face(f)->boundary_id()] ==
                  WallType::open))
-            {
-              if (domain->location(cell) == LiquidDomain<dim>::Location::cut)
-                rate += wet_face_flux(cell, f);
-              else
-                {
-                  face_values.reinit(cell, f);
-                  face_values[velocity].get_function_values(solution, u);
-                  for (const unsigned int q :
-                       face_values.quadrature_point_indices())
-                    rate +=
-                      u[q] * face_values.normal_vector(q) * face_values.JxW(q);
-                }
-            }
+            rate += face_flux(cell,
+                              f,
+                              domain->location(cell) ==
+                                  LiquidDomain<dim>::Location::cut
+                                ? domain->cut_cell(cell).wet_boundary_face(f)
+                                : whole_faces[f]);
     return Utilities::MPI::sum(rate, comm);
   }
 

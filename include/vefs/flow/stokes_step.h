@@ -174,12 +174,14 @@ namespace vefs
 
   private:
     /**
-     * The integral of u.n over the wet part of boundary face @p f of the
-     * cut cell @p cell.
+     * The integral of u.n over the part of boundary face @p f of @p cell
+     * that the rule @p wet covers (points on the reference cell's face,
+     * weights of the reference face).
      */
     double
-    wet_face_flux(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                  const unsigned int f) const;
+    face_flux(const typename DoFHandler<dim>::active_cell_iterator &cell,
+              const unsigned int                                    f,
+              const Quadrature<dim>                                &wet) const;
 
     static constexpr unsigned int liquid_index = 0;
     static constexpr unsigned int empty_index  = 1;
