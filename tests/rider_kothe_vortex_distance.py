@@ -4,8 +4,11 @@ the initial disk. Bounds, those of issue 47 at h = 1/128 scaled to 1/64 by
 the second order it asks for: L1 area error int |phi - phi_exact| at most
 4.0e-3 (1.0e-3 at 1/128), raw volume change at t = 8 without the correction
 at most 0.8 % (0.2 %). With the correction the largest |volume change| over
-all steps below 1e-9 (exact answer 0), and every statistic finite. Printed
-with two significant digits."""
+all steps below 1e-9 (exact answer 0), and every statistic finite. In every
+step of both runs the surface lies in the finest cells: while one cycle of
+refinement a remap left the band incomplete, it crossed coarser cells between
+remaps, whose Q1 liquid misreads the volume (at 1/128, CFL 1: up to 46 such
+cells in a step, doc/transport.md). Printed with two significant digits."""
 import math
 import sys
 
@@ -28,10 +31,13 @@ print("raw volume change at t = 8: %.2g" % raw_change)
 print("largest |volume change| over the steps below 1e-9: %s"
       % ("yes" if largest < 1e-9 else "NO (%.2g)" % largest))
 print("all statistics finite: %s" % ("yes" if finite else "NO"))
-ok = (largest < 1e-9 and finite and error <= 4.0e-3
+coarse = max(max(s["coarse_surface_cells"]) for s in (corrected, uncorrected))
+print("surface cells coarser than the finest, most in a step: %d" % coarse)
+ok = (largest < 1e-9 and finite and error <= 4.0e-3 and coarse == 0
       and abs(raw_change) <= 8e-3
       and all(abs(s["time"][-1] - 8) < 1e-9
               for s in (corrected, uncorrected)))
-print("L1 <= 4.0e-3, |raw volume change| <= 0.8 %%, volume kept: %s"
+print("L1 <= 4.0e-3, |raw volume change| <= 0.8 %%, volume kept, surface "
+      "in the finest cells: %s"
       % ("ok" if ok else "FAIL"))
 sys.exit(0 if ok else 1)

@@ -48,6 +48,29 @@ namespace vefs
         source = source || parameters.material.gravity[d] != 0;
       return !source && parameters.material.regime() != Regime::newtonian;
     }
+
+    /**
+     * How the local mesh follows p4est's after a mesh change. With a flow
+     * it is rebuilt from the coarse cells instead of being refined and
+     * coarsened until it matches: fewer passes on several ranks, and the
+     * cells lie in memory in p4est's order (the space-filling curve), which
+     * every loop over them gains from (doc/bouncing_ball_3d_study.md,
+     * "Settings of the fine scenes"). A 2D transport alone refines its band
+     * in several cycles at each remap, and there the rebuild, a pass per
+     * level, doubled the adaptation's cost (Zalesak's disk at h = 1/128, CFL
+     * 10: 4.8 s against 2.2 s, the same shapes; doc/transport.md); the 3D
+     * deformation's advection gains from the order as much as its
+     * adaptation loses (L = 5, CFL 5: 31.0 + 14.2 s against 35.8 + 11.4 s).
+     */
+    template <int dim>
+    typename parallel::distributed::Triangulation<dim>::Settings
+    mesh_settings(const Parameters &parameters)
+    {
+      return dim == 2 && parameters.transport.velocity_is_prescribed()
+               ? parallel::distributed::Triangulation<dim>::default_setting
+               : parallel::distributed::Triangulation<
+                   dim>::mesh_reconstruction_after_repartitioning;
+    }
   } // namespace
 
   template <int dim>
@@ -71,15 +94,9 @@ namespace vefs
             parameters.output.verbose ? TimerOutput::summary
                                       : TimerOutput::never,
             TimerOutput::wall_times)
-    // Each mesh change rebuilds the local mesh from the coarse cells instead
-    // of refining and coarsening it until it matches p4est's: fewer passes
-    // on several ranks, and the cells lie in memory in p4est's order (the
-    // space-filling curve), which every loop over them gains from
-    // (doc/bouncing_ball_3d_study.md, "Settings of the fine scenes").
     , triangulation(comm,
                     Triangulation<dim>::limit_level_difference_at_vertices,
-                    parallel::distributed::Triangulation<
-                      dim>::mesh_reconstruction_after_repartitioning)
+                    mesh_settings<dim>(parameters))
     , cavity(std::make_pair(to_point<dim>(parameters.cavity.cavity_lower),
                             to_point<dim>(parameters.cavity.cavity_upper)))
     , levels(parameters.mesh,

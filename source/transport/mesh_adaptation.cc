@@ -361,7 +361,8 @@ namespace vefs
              const LevelSetInterpolation                  interpolation,
              typename TransportedFields<dim>::VectorType *surface_ahead,
              const PresentBand                            present_band,
-             CoarsenedDetail<dim>                        *coarsened_detail)
+             CoarsenedDetail<dim>                        *coarsened_detail,
+             const bool                                   coarsen)
   {
     Assert(present_band == PresentBand::kept || coarsened_detail,
            ExcMessage("A coarsened band keeps its detail."));
@@ -397,7 +398,7 @@ namespace vefs
                 {
                   cell->set_refine_flag();
                 }
-              else if (level > allowed.second &&
+              else if (level > allowed.second && coarsen &&
                        present_band != PresentBand::refine_only)
                 {
                   cell->set_coarsen_flag();
@@ -581,7 +582,8 @@ namespace vefs
                 const LevelSetInterpolation,
                 TransportedFields<2>::VectorType *,
                 const PresentBand,
-                CoarsenedDetail<2> *);
+                CoarsenedDetail<2> *,
+                const bool);
   template bool
   adapt_mesh<3>(parallel::distributed::Triangulation<3> &,
                 TransportedFields<3> &,
@@ -591,7 +593,8 @@ namespace vefs
                 const LevelSetInterpolation,
                 TransportedFields<3>::VectorType *,
                 const PresentBand,
-                CoarsenedDetail<3> *);
+                CoarsenedDetail<3> *,
+                const bool);
 
   template SurfaceCells
   count_surface_cells<2>(const TransportedFields<2> &, const unsigned int);

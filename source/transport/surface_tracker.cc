@@ -128,14 +128,33 @@ namespace vefs
       {
         levels.expect_cfl(std::max(time.expected_cfl(),
                                    level_set_history.cells_between_remaps()));
-        if (vefs::adapt_mesh(triangulation,
-                             fields,
-                             &level_set_gradient,
-                             levels,
-                             1,
-                             parameters.level_set_interpolation))
+        // A cycle moves a cell by one level. Remapped every step, the
+        // surface moves less than the band is wide, and one cycle keeps it
+        // in the finest cells. Between remaps it moves up to the remap
+        // distance, beyond the band's graded rim, into cells that one cycle
+        // a remap had not yet brought to the finest level (the vortex at
+        // h = 1/128, CFL 1: up to 46 surface cells coarser than the finest,
+        // doc/transport.md): refine until the band is complete. Further
+        // cycles only refine: coarsening would undo what the 2:1 balance
+        // refined in the cycle before.
+        const unsigned int cycles =
+          level_set_history.enabled() ? levels.max_level - levels.min_level : 1;
+        unsigned int changes = 0;
+        while (changes < cycles &&
+               vefs::adapt_mesh<dim>(triangulation,
+                                     fields,
+                                     &level_set_gradient,
+                                     levels,
+                                     1,
+                                     parameters.level_set_interpolation,
+                                     nullptr,
+                                     PresentBand::kept,
+                                     nullptr,
+                                     changes == 0))
+          ++changes;
+        statistics.mesh_changes += changes;
+        if (changes > 0)
           {
-            ++statistics.mesh_changes;
             // Restore the volume on the new mesh (doc/time_step_surface.md,
             // step 4) where the change can have moved it: with a cubic level
             // set the new nodes of refined cells take cubic values, and a

@@ -220,7 +220,10 @@ namespace vefs
    * the motion. The adaptation after the advection then keeps such cells
    * within the CFL number's reach (MeshLevels::expect_cfl()) as they are.
    * @p present_band says whether the present surface's band is kept too;
-   * if not, @p coarsened_detail keeps the coarsened cells' fields.
+   * if not, @p coarsened_detail keeps the coarsened cells' fields. Without
+   * @p coarsen no cell is coarsened: the further cycles that complete a
+   * band (at a remap), where coarsening would undo what the 2:1 balance
+   * refined in the cycle before.
    */
   template <int dim>
   bool
@@ -233,7 +236,8 @@ namespace vefs
     const LevelSetInterpolation                  interpolation,
     typename TransportedFields<dim>::VectorType *surface_ahead = nullptr,
     const PresentBand     present_band     = PresentBand::kept,
-    CoarsenedDetail<dim> *coarsened_detail = nullptr);
+    CoarsenedDetail<dim> *coarsened_detail = nullptr,
+    const bool            coarsen          = true);
 
   /** The cells the surface (psi = 0) crosses, over all ranks. */
   struct SurfaceCells
