@@ -361,10 +361,9 @@ namespace vefs
              const LevelSetInterpolation                  interpolation,
              typename TransportedFields<dim>::VectorType *surface_ahead,
              const PresentBand                            present_band,
-             CoarsenedDetail<dim>                        *coarsened_detail,
-             const bool                                   coarsen)
+             CoarsenedDetail<dim>                        *coarsened_detail)
   {
-    Assert(present_band == PresentBand::kept || coarsened_detail,
+    Assert(present_band != PresentBand::coarsened || coarsened_detail,
            ExcMessage("A coarsened band keeps its detail."));
     constexpr unsigned int c = TransportedFields<dim>::level_set_component;
     bool                   changed = false;
@@ -398,7 +397,7 @@ namespace vefs
                 {
                   cell->set_refine_flag();
                 }
-              else if (level > allowed.second && coarsen &&
+              else if (level > allowed.second &&
                        present_band != PresentBand::refine_only)
                 {
                   cell->set_coarsen_flag();
@@ -444,7 +443,7 @@ namespace vefs
                                                        interpolation);
             lattice_source = hermite_refinement.get();
           }
-        if (present_band != PresentBand::kept)
+        if (coarsened_detail && present_band != PresentBand::kept)
           {
             AssertThrow(!lattice_source, ExcInternalError());
             coarsened_detail->from_fields(fields);
@@ -582,8 +581,7 @@ namespace vefs
                 const LevelSetInterpolation,
                 TransportedFields<2>::VectorType *,
                 const PresentBand,
-                CoarsenedDetail<2> *,
-                const bool);
+                CoarsenedDetail<2> *);
   template bool
   adapt_mesh<3>(parallel::distributed::Triangulation<3> &,
                 TransportedFields<3> &,
@@ -593,8 +591,7 @@ namespace vefs
                 const LevelSetInterpolation,
                 TransportedFields<3>::VectorType *,
                 const PresentBand,
-                CoarsenedDetail<3> *,
-                const bool);
+                CoarsenedDetail<3> *);
 
   template SurfaceCells
   count_surface_cells<2>(const TransportedFields<2> &, const unsigned int);

@@ -148,9 +148,8 @@ namespace vefs
                                      1,
                                      parameters.level_set_interpolation,
                                      nullptr,
-                                     PresentBand::kept,
-                                     nullptr,
-                                     changes == 0))
+                                     changes == 0 ? PresentBand::kept
+                                                  : PresentBand::refine_only))
           ++changes;
         statistics.mesh_changes += changes;
         if (changes > 0)

@@ -183,8 +183,9 @@ namespace vefs
   };
 
   /**
-   * What a change of the mesh before an advection ('Band placement =
-   * predicted') does with the band of the present surface.
+   * What a change of the mesh does with the band of the present surface:
+   * before an advection ('Band placement = predicted'), and in the further
+   * cycles that complete the band at a remap (SurfaceTracker).
    */
   enum class PresentBand
   {
@@ -196,8 +197,8 @@ namespace vefs
      */
     coarsened,
     /**
-     * A further cycle after 'coarsened': refine only, carrying the detail
-     * along.
+     * A further cycle: refine only; after 'coarsened', carrying the detail
+     * along (the cycles that complete a band at a remap have none).
      */
     refine_only
   };
@@ -220,10 +221,7 @@ namespace vefs
    * the motion. The adaptation after the advection then keeps such cells
    * within the CFL number's reach (MeshLevels::expect_cfl()) as they are.
    * @p present_band says whether the present surface's band is kept too;
-   * if not, @p coarsened_detail keeps the coarsened cells' fields. Without
-   * @p coarsen no cell is coarsened: the further cycles that complete a
-   * band (at a remap), where coarsening would undo what the 2:1 balance
-   * refined in the cycle before.
+   * if not, @p coarsened_detail keeps the coarsened cells' fields.
    */
   template <int dim>
   bool
@@ -236,8 +234,7 @@ namespace vefs
     const LevelSetInterpolation                  interpolation,
     typename TransportedFields<dim>::VectorType *surface_ahead = nullptr,
     const PresentBand     present_band     = PresentBand::kept,
-    CoarsenedDetail<dim> *coarsened_detail = nullptr,
-    const bool            coarsen          = true);
+    CoarsenedDetail<dim> *coarsened_detail = nullptr);
 
   /** The cells the surface (psi = 0) crosses, over all ranks. */
   struct SurfaceCells
