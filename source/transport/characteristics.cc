@@ -130,6 +130,7 @@ namespace vefs
         TransportedFields<dim>::level_set_component;
       FieldValues<dim> values(fields.n_components);
       const auto       dof_cell = fields.cell_of(cell);
+      const auto       entries  = fields.vertex_entries(dof_cell);
       if (const double *lattice = how.coarsened_detail
                                     ? how.coarsened_detail->lattice(cell)
                                     : nullptr)
@@ -140,7 +141,7 @@ namespace vefs
           {
             const double weight = BoxMeshLocator<dim>::vertex_weight(xi, v);
             for (unsigned int c = 0; c < fields.n_components; ++c)
-              values[c] += weight * fields.value_at(dof_cell, v, c);
+              values[c] += weight * fields.local_value(entries[v] + c);
           }
       if (how.velocity_gradient)
         for (const unsigned int v : cell->vertex_indices())
@@ -150,13 +151,14 @@ namespace vefs
               for (unsigned int j = 0; j < dim; ++j)
                 values.extra(dim * i + j) +=
                   weight *
-                  (*how.velocity_gradient)[j](dof_cell->vertex_dof_index(v, i));
+                  (*how.velocity_gradient)[j].local_element(entries[v] + i);
           }
       if (how.velocity_hermite)
         for (const unsigned int c : how.velocity_components)
           values[c] =
             how.velocity_hermite->component_value(fields,
                                                   dof_cell,
+                                                  entries,
                                                   xi,
                                                   c,
                                                   how.velocity_limited);
@@ -173,6 +175,7 @@ namespace vefs
               cubic.access_raw_entry(i) =
                 how.stress_hermite->component_value(fields,
                                                     dof_cell,
+                                                    entries,
                                                     xi,
                                                     first + i,
                                                     true);
@@ -195,6 +198,7 @@ namespace vefs
           values[level_set] = how.hermite->value(
             fields,
             dof_cell,
+            entries,
             xi,
             how.limited ||
               (how.limited_at_contact_walls &&

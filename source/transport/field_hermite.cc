@@ -83,11 +83,10 @@ namespace vefs
           // values[0]: psi, values[1 + d]: its advected derivative in
           // direction d.
           std::array<std::array<double, n_vertices>, dim + 1> values;
-          std::array<types::global_dof_index, n_vertices>     dofs;
+          const auto entries = fields.vertex_entries(cell);
           for (const unsigned int v : cell->vertex_indices())
             {
-              dofs[v]      = cell->vertex_dof_index(v, c);
-              values[0][v] = fields.value_at(cell, v, c);
+              values[0][v] = fields.local_value(entries[v] + c);
               if (advected_gradient)
                 {
                   const Tensor<1, dim> gradient =
@@ -99,7 +98,7 @@ namespace vefs
           const Tensor<1, dim> h = extents<dim>(cell);
           for (const unsigned int v : cell->vertex_indices())
             {
-              n_cells(dofs[v]) += 1;
+              n_cells.local_element(entries[v] + c) += 1;
               for (unsigned int s = 1; s <= n_derivatives; ++s)
                 {
                   double derivative = 0;
@@ -122,7 +121,8 @@ namespace vefs
                           }
                       derivative /= n_terms;
                     }
-                  derivatives[s - 1](dofs[v]) += derivative;
+                  derivatives[s - 1].local_element(entries[v] + c) +=
+                    derivative;
                 }
             }
         }
@@ -150,21 +150,18 @@ namespace vefs
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const Tensor<1, dim> h = extents<dim>(cell);
+          const Tensor<1, dim> h       = extents<dim>(cell);
+          const auto           entries = fields.vertex_entries(cell);
           for (const unsigned int c : components)
             {
-              std::array<double, n_vertices>                  values;
-              std::array<types::global_dof_index, n_vertices> dofs;
+              std::array<double, n_vertices> values;
+              for (const unsigned int v : cell->vertex_indices())
+                values[v] = fields.local_value(entries[v] + c);
               for (const unsigned int v : cell->vertex_indices())
                 {
-                  dofs[v]   = cell->vertex_dof_index(v, c);
-                  values[v] = fields.value_at(cell, v, c);
-                }
-              for (const unsigned int v : cell->vertex_indices())
-                {
-                  n_cells(dofs[v]) += 1;
+                  n_cells.local_element(entries[v] + c) += 1;
                   for (unsigned int s = 1; s <= n_derivatives; ++s)
-                    derivatives[s - 1](dofs[v]) +=
+                    derivatives[s - 1].local_element(entries[v] + c) +=
                       q1_derivative<dim>(values, h, v, s);
                 }
             }
@@ -178,12 +175,14 @@ namespace vefs
   FieldHermite<dim>::value(
     const TransportedFields<dim>                         &fields,
     const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const typename TransportedFields<dim>::VertexEntries &entries,
     const Point<dim>                                     &xi,
     const bool                                            limited,
     Tensor<1, dim>                                       *gradient) const
   {
     return interpolate(fields,
                        cell,
+                       entries,
                        xi,
                        TransportedFields<dim>::level_set_component,
                        limited,
@@ -195,11 +194,12 @@ namespace vefs
   FieldHermite<dim>::component_value(
     const TransportedFields<dim>                         &fields,
     const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const typename TransportedFields<dim>::VertexEntries &entries,
     const Point<dim>                                     &xi,
     const unsigned int                                    component,
     const bool                                            limited) const
   {
-    return interpolate(fields, cell, xi, component, limited, nullptr);
+    return interpolate(fields, cell, entries, xi, component, limited, nullptr);
   }
 
   template <int dim>
@@ -207,6 +207,7 @@ namespace vefs
   FieldHermite<dim>::interpolate(
     const TransportedFields<dim>                         &fields,
     const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const typename TransportedFields<dim>::VertexEntries &entries,
     const Point<dim>                                     &xi,
     const unsigned int                                    c,
     const bool                                            limited,
@@ -232,24 +233,22 @@ namespace vefs
         slopes[d][1][1] = -t * (2 - 3 * t);
       }
 
-    // The fields and the derivatives share one partitioner: one
-    // global-to-local translation per vertex. The weight of mode s at vertex v
+    // The fields and the derivatives share one partitioner, whose local
+    // indices the entries are. The weight of mode s at vertex v
     // is a product of one factor per direction; its x_e-derivative replaces
     // factor e by its slope (the products before and after e, kept as prefix
     // and suffix products).
-    const auto &partitioner = *derivatives[0].get_partitioner();
-    double      value       = 0;
-    double      lower       = std::numeric_limits<double>::max();
-    double      upper       = std::numeric_limits<double>::lowest();
+    double value = 0;
+    double lower = std::numeric_limits<double>::max();
+    double upper = std::numeric_limits<double>::lowest();
     if (gradient)
       *gradient = Tensor<1, dim>();
     for (const unsigned int v : cell->vertex_indices())
       {
-        const unsigned int local =
-          partitioner.global_to_local(cell->vertex_dof_index(v, c));
-        const double f_v = fields.local_value(local);
-        lower            = std::min(lower, f_v);
-        upper            = std::max(upper, f_v);
+        const unsigned int local = entries[v] + c;
+        const double       f_v   = fields.local_value(local);
+        lower                    = std::min(lower, f_v);
+        upper                    = std::max(upper, f_v);
         for (unsigned int s = 0; s <= n_derivatives; ++s)
           {
             const double nodal =

@@ -329,12 +329,14 @@ namespace vefs
           return {};
         std::vector<double> values((dim + 1) * FamilyLattice<dim>::n_points);
         const auto          dof_cell = fields.cell_of(cell);
+        const auto          entries  = fields.vertex_entries(dof_cell);
         for (unsigned int i = 0; i < FamilyLattice<dim>::n_points; ++i)
           {
             Tensor<1, dim> gradient;
             values[(dim + 1) * i] =
               hermite.value(fields,
                             dof_cell,
+                            entries,
                             FamilyLattice<dim>::unit_point(i),
                             limited,
                             &gradient);

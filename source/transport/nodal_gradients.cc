@@ -15,24 +15,29 @@ namespace vefs
 
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        for (unsigned int c = 0; c < n_components; ++c)
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              const auto dof = cell->vertex_dof_index(v, c);
-              n_cells(dof) += 1;
-              for (unsigned int j = 0; j < dim; ++j)
-                {
-                  // The Q1 derivative along the edge through v in direction
-                  // j.
-                  const unsigned int w = v ^ (1u << j);
-                  const double       h =
-                    cell->vertex(1u << j)[j] - cell->vertex(0)[j];
-                  const double difference =
-                    fields.value_at(cell, (v >> j) & 1 ? v : w, c) -
-                    fields.value_at(cell, (v >> j) & 1 ? w : v, c);
-                  gradients[j](dof) += difference / h;
-                }
-            }
+        {
+          const auto entries = fields.vertex_entries(cell);
+          for (unsigned int c = 0; c < n_components; ++c)
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                const unsigned int entry = entries[v] + c;
+                n_cells.local_element(entry) += 1;
+                for (unsigned int j = 0; j < dim; ++j)
+                  {
+                    // The Q1 derivative along the edge through v in
+                    // direction j.
+                    const unsigned int w = v ^ (1u << j);
+                    const double       h =
+                      cell->vertex(1u << j)[j] - cell->vertex(0)[j];
+                    const unsigned int upper = (v >> j) & 1 ? v : w;
+                    const unsigned int lower = (v >> j) & 1 ? w : v;
+                    const double       difference =
+                      fields.local_value(entries[upper] + c) -
+                      fields.local_value(entries[lower] + c);
+                    gradients[j].local_element(entry) += difference / h;
+                  }
+              }
+        }
 
     n_cells.compress(VectorOperation::add);
     for (auto &gradient : gradients)

@@ -110,7 +110,8 @@ namespace vefs
       if (cell->is_locally_owned())
         {
           std::array<double, GeometryInfo<dim>::vertices_per_cell> values;
-          bool has_liquid = false, has_gas = false;
+          const auto entries    = fields.vertex_entries(cell);
+          bool       has_liquid = false, has_gas = false;
           for (const unsigned int v : cell->vertex_indices())
             {
               values[v] = fields.level_set_at(cell, v);
@@ -118,7 +119,7 @@ namespace vefs
             }
           const auto interpolate = [&](const Point<dim> &xi) {
             if (cubic)
-              return hermite.value(fields, cell, xi, false);
+              return hermite.value(fields, cell, entries, xi, false);
             double value = 0;
             for (unsigned int v = 0; v < values.size(); ++v)
               value += BoxMeshLocator<dim>::vertex_weight(xi, v) * values[v];
@@ -150,6 +151,7 @@ namespace vefs
                       {
                         hermite.value(fields,
                                       cell,
+                                      entries,
                                       unit_crossings[k],
                                       false,
                                       &normal);

@@ -131,8 +131,12 @@ namespace
             for (unsigned int d = 0; d < dim; ++d)
               p[d] += xi[d] * (cell->vertex(1u << d)[d] - cell->vertex(0)[d]);
             Tensor<1, dim> gradient;
-            const double   value =
-              hermite.value(fields, cell, xi, false, &gradient);
+            const double   value = hermite.value(fields,
+                                               cell,
+                                               fields.vertex_entries(cell),
+                                               xi,
+                                               false,
+                                               &gradient);
             value_error = std::max(value_error, std::abs(value - f.value(p)));
             gradient_error =
               std::max(gradient_error, (gradient - f.gradient(p)).norm());

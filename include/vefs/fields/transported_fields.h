@@ -2,6 +2,7 @@
 #define vefs_transported_fields_h
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/geometry_info.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/distributed/tria.h>
@@ -302,6 +303,27 @@ namespace vefs
              const unsigned int  c) const
     {
       return fields(cell->vertex_dof_index(v, c));
+    }
+
+    /**
+     * Local indices (owned or ghost, in the numbering of partitioner) of the
+     * first component at each vertex of a cell: component c of vertex v is
+     * entry first[v] + c, the components of a vertex being numbered in a row.
+     * One translation per vertex for walks that read many components at
+     * points (the feet of the characteristics).
+     */
+    using VertexEntries =
+      std::array<unsigned int, GeometryInfo<dim>::vertices_per_cell>;
+
+    /** For an owned or ghost @p cell. */
+    template <typename CellIterator>
+    VertexEntries
+    vertex_entries(const CellIterator &cell) const
+    {
+      VertexEntries first;
+      for (const unsigned int v : cell->vertex_indices())
+        first[v] = partitioner->global_to_local(cell->vertex_dof_index(v, 0));
+      return first;
     }
 
     /** For a vertex whose degrees of freedom this rank owns. */

@@ -56,24 +56,28 @@ namespace vefs
 
     /**
      * The level set at the unit-cell point @p xi of @p cell (locally owned
-     * or ghost), and its gradient in @p gradient if not null. With
+     * or ghost; @p entries its TransportedFields::vertex_entries()), and its
+     * gradient in @p gradient if not null. With
      * @p limited the value is clipped to the range of the cell's nodal
      * values, which keeps cubic overshoots out of kinks.
      */
     double
     value(const TransportedFields<dim>                         &fields,
           const typename DoFHandler<dim>::active_cell_iterator &cell,
+          const typename TransportedFields<dim>::VertexEntries &entries,
           const Point<dim>                                     &xi,
           const bool                                            limited,
           Tensor<1, dim> *gradient = nullptr) const;
 
     /** Like value(), for a component of recover_components(). */
     double
-    component_value(const TransportedFields<dim> &fields,
-                    const typename DoFHandler<dim>::active_cell_iterator &cell,
-                    const Point<dim>                                     &xi,
-                    const unsigned int component,
-                    const bool         limited) const;
+    component_value(
+      const TransportedFields<dim>                         &fields,
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const typename TransportedFields<dim>::VertexEntries &entries,
+      const Point<dim>                                     &xi,
+      const unsigned int                                    component,
+      const bool                                            limited) const;
 
     /** The level set's nodal gradient at an owned @p node (after recover()). */
     Tensor<1, dim>
@@ -90,6 +94,7 @@ namespace vefs
     double
     interpolate(const TransportedFields<dim>                         &fields,
                 const typename DoFHandler<dim>::active_cell_iterator &cell,
+                const typename TransportedFields<dim>::VertexEntries &entries,
                 const Point<dim>                                     &xi,
                 const unsigned int                                    component,
                 const bool                                            limited,
