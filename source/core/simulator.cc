@@ -353,7 +353,6 @@ namespace vefs
                              fields,
                              nullptr,
                              levels,
-                             1,
                              LevelSetInterpolation::linear))
           break;
       }

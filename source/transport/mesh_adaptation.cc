@@ -359,7 +359,6 @@ namespace vefs
              TransportedFields<dim>                      &fields,
              LevelSetGradient<dim>                       *level_set_gradient,
              const MeshLevels                            &levels,
-             const unsigned int                           max_cycles,
              const LevelSetInterpolation                  interpolation,
              typename TransportedFields<dim>::VectorType *surface_ahead,
              const PresentBand                            present_band,
@@ -368,120 +367,113 @@ namespace vefs
     Assert(present_band != PresentBand::coarsened || coarsened_detail,
            ExcMessage("A coarsened band keeps its detail."));
     constexpr unsigned int c = TransportedFields<dim>::level_set_component;
-    bool                   changed = false;
-    for (unsigned int cycle = 0; cycle < max_cycles; ++cycle)
-      {
-        for (const auto &cell : fields.dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
+    for (const auto &cell : fields.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto present = cell_level_set<dim>(fields.vector(), cell);
+          std::pair<unsigned int, unsigned int> allowed;
+          double                                lowest = present.lowest;
+          if (!surface_ahead)
+            allowed = levels.allowed_levels(present);
+          else
             {
-              const auto present = cell_level_set<dim>(fields.vector(), cell);
-              std::pair<unsigned int, unsigned int> allowed;
-              double                                lowest = present.lowest;
-              if (!surface_ahead)
-                allowed = levels.allowed_levels(present);
-              else
-                {
-                  const auto ahead = cell_level_set<dim>(*surface_ahead, cell);
-                  const double motion =
-                    local_motion<dim>(fields.vector(), *surface_ahead, cell);
-                  allowed = present_band == PresentBand::kept
-                              ? levels.allowed_levels(present, ahead, motion)
-                              : levels.allowed_levels(ahead, motion);
-                  lowest  = ahead.lowest;
-                }
-              // Liquid cells (a vertex with psi < 0) are remembered for the
-              // partitioner (children inherit it): the flow is solved on
-              // them only, after the advection, so with a predicted surface
-              // its liquid counts.
-              cell->set_material_id(lowest < 0 ? liquid_material_id : 0);
-              const unsigned int level = cell->level();
-              if (level < allowed.first)
-                {
-                  cell->set_refine_flag();
-                }
-              else if (level > allowed.second &&
-                       present_band != PresentBand::refine_only)
-                {
-                  cell->set_coarsen_flag();
-                }
+              const auto   ahead = cell_level_set<dim>(*surface_ahead, cell);
+              const double motion =
+                local_motion<dim>(fields.vector(), *surface_ahead, cell);
+              allowed = present_band == PresentBand::kept
+                          ? levels.allowed_levels(present, ahead, motion)
+                          : levels.allowed_levels(ahead, motion);
+              lowest  = ahead.lowest;
             }
-        // Mesh smoothing and the 2:1 balance may veto flags: stop when none
-        // is left anywhere.
-        triangulation.prepare_coarsening_and_refinement();
-        bool flagged = false;
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned() &&
-              (cell->refine_flag_set() || cell->coarsen_flag_set()))
-            flagged = true;
-        if (!Utilities::MPI::logical_or(flagged,
-                                        triangulation.get_communicator()))
-          break;
+          // Liquid cells (a vertex with psi < 0) are remembered for the
+          // partitioner (children inherit it): the flow is solved on
+          // them only, after the advection, so with a predicted surface
+          // its liquid counts.
+          cell->set_material_id(lowest < 0 ? liquid_material_id : 0);
+          const unsigned int level = cell->level();
+          if (level < allowed.first)
+            {
+              cell->set_refine_flag();
+            }
+          else if (level > allowed.second &&
+                   present_band != PresentBand::refine_only)
+            {
+              cell->set_coarsen_flag();
+            }
+        }
+    // Mesh smoothing and the 2:1 balance may veto flags: stop when none
+    // is left anywhere.
+    triangulation.prepare_coarsening_and_refinement();
+    bool flagged = false;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          (cell->refine_flag_set() || cell->coarsen_flag_set()))
+        flagged = true;
+    if (!Utilities::MPI::logical_or(flagged, triangulation.get_communicator()))
+      return false;
 
-        // The level set gradient has dim used slots, the predicted surface
-        // one. Only the cubic interpolations read the gradient: with the
-        // linear one it is not carried (a fifth of the data sent in 3D).
-        using Transfer = VertexFieldTransfer<dim>;
-        const bool with_gradient =
-          level_set_gradient && interpolation != LevelSetInterpolation::linear;
-        std::vector<unsigned int> all_fields(fields.n_components);
-        std::iota(all_fields.begin(), all_fields.end(), 0);
-        std::vector<unsigned int> gradient(dim);
-        std::iota(gradient.begin(), gradient.end(), 0);
-        std::vector<typename Transfer::Slot> slots = {
-          {&fields.vector(), all_fields}};
-        if (with_gradient)
-          slots.push_back({&level_set_gradient->vector(), gradient});
-        if (surface_ahead)
-          slots.push_back({surface_ahead, {c}});
-        // Refined cells take the cubic level set, or the detail they kept
-        // (the one-change band refuses the cubic interpolations).
-        std::unique_ptr<HermiteRefinement<dim>> hermite_refinement;
-        typename Transfer::LatticeSource       *lattice_source = nullptr;
-        if (with_gradient)
-          {
-            hermite_refinement =
-              std::make_unique<HermiteRefinement<dim>>(fields,
-                                                       *level_set_gradient,
-                                                       interpolation);
-            lattice_source = hermite_refinement.get();
-          }
-        if (coarsened_detail && present_band != PresentBand::kept)
-          {
-            AssertThrow(!lattice_source, ExcInternalError());
-            coarsened_detail->from_fields(fields);
-            lattice_source = coarsened_detail;
-          }
-        const auto move_fields = [&](const std::function<void()> &change) {
-          auto transferred = carry_through_mesh_change(triangulation,
-                                                       fields,
-                                                       slots,
-                                                       change,
-                                                       lattice_source);
-          // swap(), not operator=: a vector whose owned range is the same
-          // after the change would keep its old ghost layout.
-          fields.swap(transferred[0]);
-          if (with_gradient)
-            level_set_gradient->swap(transferred[1]);
-          else if (level_set_gradient)
-            level_set_gradient->reinit(fields);
-          if (surface_ahead)
-            {
-              surface_ahead->swap(transferred.back());
-              fields.make_consistent(*surface_ahead);
-            }
-          fields.finalize();
-          if (with_gradient)
-            level_set_gradient->finalize(fields);
-        };
-        move_fields(
-          [&]() { triangulation.execute_coarsening_and_refinement(); });
-        // Refined last cells of subtrees that must stay whole weigh as much
-        // each as the subtree: p4est may have cut one (SubtreePartition).
-        if (subtrees_split(triangulation, levels.subtree_level))
-          move_fields([&]() { triangulation.repartition(); });
-        changed = true;
+    // The level set gradient has dim used slots, the predicted surface
+    // one. Only the cubic interpolations read the gradient: with the
+    // linear one it is not carried (a fifth of the data sent in 3D).
+    using Transfer = VertexFieldTransfer<dim>;
+    const bool with_gradient =
+      level_set_gradient && interpolation != LevelSetInterpolation::linear;
+    std::vector<unsigned int> all_fields(fields.n_components);
+    std::iota(all_fields.begin(), all_fields.end(), 0);
+    std::vector<unsigned int> gradient(dim);
+    std::iota(gradient.begin(), gradient.end(), 0);
+    std::vector<typename Transfer::Slot> slots = {
+      {&fields.vector(), all_fields}};
+    if (with_gradient)
+      slots.push_back({&level_set_gradient->vector(), gradient});
+    if (surface_ahead)
+      slots.push_back({surface_ahead, {c}});
+    // Refined cells take the cubic level set, or the detail they kept
+    // (the one-change band refuses the cubic interpolations).
+    std::unique_ptr<HermiteRefinement<dim>> hermite_refinement;
+    typename Transfer::LatticeSource       *lattice_source = nullptr;
+    if (with_gradient)
+      {
+        hermite_refinement =
+          std::make_unique<HermiteRefinement<dim>>(fields,
+                                                   *level_set_gradient,
+                                                   interpolation);
+        lattice_source = hermite_refinement.get();
       }
-    return changed;
+    if (coarsened_detail && present_band != PresentBand::kept)
+      {
+        AssertThrow(!lattice_source, ExcInternalError());
+        coarsened_detail->from_fields(fields);
+        lattice_source = coarsened_detail;
+      }
+    const auto move_fields = [&](const std::function<void()> &change) {
+      auto transferred = carry_through_mesh_change(triangulation,
+                                                   fields,
+                                                   slots,
+                                                   change,
+                                                   lattice_source);
+      // swap(), not operator=: a vector whose owned range is the same
+      // after the change would keep its old ghost layout.
+      fields.swap(transferred[0]);
+      if (with_gradient)
+        level_set_gradient->swap(transferred[1]);
+      else if (level_set_gradient)
+        level_set_gradient->reinit(fields);
+      if (surface_ahead)
+        {
+          surface_ahead->swap(transferred.back());
+          fields.make_consistent(*surface_ahead);
+        }
+      fields.finalize();
+      if (with_gradient)
+        level_set_gradient->finalize(fields);
+    };
+    move_fields([&]() { triangulation.execute_coarsening_and_refinement(); });
+    // Refined last cells of subtrees that must stay whole weigh as much
+    // each as the subtree: p4est may have cut one (SubtreePartition).
+    if (subtrees_split(triangulation, levels.subtree_level))
+      move_fields([&]() { triangulation.repartition(); });
+    return true;
   }
 
   template <int dim>
@@ -558,7 +550,6 @@ namespace vefs
                         fields,
                         &level_set_gradient,
                         levels,
-                        1,
                         interpolation,
                         &surface_ahead,
                         present_band,
@@ -579,7 +570,6 @@ namespace vefs
                 TransportedFields<2> &,
                 LevelSetGradient<2> *,
                 const MeshLevels &,
-                const unsigned int,
                 const LevelSetInterpolation,
                 TransportedFields<2>::VectorType *,
                 const PresentBand,
@@ -589,7 +579,6 @@ namespace vefs
                 TransportedFields<3> &,
                 LevelSetGradient<3> *,
                 const MeshLevels &,
-                const unsigned int,
                 const LevelSetInterpolation,
                 TransportedFields<3>::VectorType *,
                 const PresentBand,

@@ -145,7 +145,6 @@ namespace vefs
                                      fields,
                                      &level_set_gradient,
                                      levels,
-                                     1,
                                      parameters.level_set_interpolation,
                                      nullptr,
                                      changes == 0 ? PresentBand::kept

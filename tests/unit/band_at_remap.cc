@@ -145,7 +145,7 @@ main(int argc, char **argv)
       {
         fields.interpolate(present, velocity);
         gradient.reinit(fields);
-        vefs::adapt_mesh(mesh, fields, &gradient, levels, 1, linear);
+        vefs::adapt_mesh(mesh, fields, &gradient, levels, linear);
       }
     fields.interpolate(moved, velocity);
     gradient.reinit(fields);
@@ -160,7 +160,6 @@ main(int argc, char **argv)
                               fields,
                               &gradient,
                               levels,
-                              1,
                               linear,
                               nullptr,
                               changes == 0 ? vefs::PresentBand::kept

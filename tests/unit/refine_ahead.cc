@@ -136,7 +136,7 @@ namespace
       {
         fields.interpolate(Circle(present_centre), velocity);
         gradient.reinit(fields);
-        vefs::adapt_mesh(triangulation, fields, &gradient, levels, 1, linear);
+        vefs::adapt_mesh(triangulation, fields, &gradient, levels, linear);
       }
     fields.interpolate(Circle(ahead_centre), velocity);
     vefs::TransportedFields<2>::VectorType surface_ahead = fields.vector();

@@ -204,11 +204,13 @@ namespace vefs
   };
 
   /**
-   * Refine and coarsen toward the target levels, transferring the fields
-   * (and @p level_set_gradient, if given: nullptr before it exists),
-   * at most @p max_cycles times (each changes a cell by one level) or until
-   * the mesh stops changing. Returns true if it changed. In the time loop
-   * one cycle a step suffices: the band is wider than the surface moves.
+   * One mesh change toward the target levels (a cell moves by at most one
+   * level), transferring the fields (and @p level_set_gradient, if given:
+   * nullptr before it exists). Returns false, leaving the mesh as it is, if
+   * no cell needs to change. In the time loop one change a step suffices:
+   * the band is wider than the surface moves; the callers that need more
+   * repeat it (the initial refinement, refine_ahead_of_surface(), the
+   * remap's cycles in SurfaceTracker).
    * Unless @p interpolation is linear, the level set at new vertices is the
    * cubic one of the refined cell, not the Q1 one. If @p surface_ahead is
    * given (the level set the next advection will give, predict_level_set()),
@@ -230,7 +232,6 @@ namespace vefs
     TransportedFields<dim>                      &fields,
     LevelSetGradient<dim>                       *level_set_gradient,
     const MeshLevels                            &levels,
-    const unsigned int                           max_cycles,
     const LevelSetInterpolation                  interpolation,
     typename TransportedFields<dim>::VectorType *surface_ahead = nullptr,
     const PresentBand     present_band     = PresentBand::kept,
