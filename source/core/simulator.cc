@@ -50,23 +50,24 @@ namespace vefs
     }
 
     /**
-     * How the local mesh follows p4est's after a mesh change. With a flow
-     * it is rebuilt from the coarse cells instead of being refined and
-     * coarsened until it matches: fewer passes on several ranks, and the
-     * cells lie in memory in p4est's order (the space-filling curve), which
-     * every loop over them gains from (doc/bouncing_ball_3d_study.md,
-     * "Settings of the fine scenes"). A 2D transport alone refines its band
-     * in several cycles at each remap, and there the rebuild, a pass per
-     * level, doubled the adaptation's cost (Zalesak's disk at h = 1/128, CFL
-     * 10: 4.8 s against 2.2 s, the same shapes; doc/transport.md); the 3D
-     * deformation's advection gains from the order as much as its
-     * adaptation loses (L = 5, CFL 5: 31.0 + 14.2 s against 35.8 + 11.4 s).
+     * How the local mesh follows p4est's after a mesh change. In 3D it is
+     * rebuilt from the coarse cells instead of being refined and coarsened
+     * until it matches: fewer passes on several ranks, and the cells lie in
+     * memory in p4est's order (the space-filling curve), which every loop
+     * over them gains from (doc/bouncing_ball_3d_study.md, "Settings of the
+     * fine scenes"); the 3D deformation's advection gains from the order as
+     * much as its adaptation loses (L = 5, CFL 5: 31.0 + 14.2 s against
+     * 35.8 + 11.4 s). In 2D the rebuild, a pass per level, costs more than
+     * it gains: Zalesak's disk at h = 1/128, CFL 10, adaptation 4.8 s
+     * against 2.2 s (doc/transport.md); the 2D stiff ball to t = 0.3 s
+     * (a mesh change every step, 3,000 cells), adaptation 5.8 s against 3.7
+     * s on one rank, 3.6 s against 2.3 s on two (the same meshes).
      */
     template <int dim>
     typename parallel::distributed::Triangulation<dim>::Settings
-    mesh_settings(const Parameters &parameters)
+    mesh_settings()
     {
-      return dim == 2 && parameters.transport.velocity_is_prescribed()
+      return dim == 2
                ? parallel::distributed::Triangulation<dim>::default_setting
                : parallel::distributed::Triangulation<
                    dim>::mesh_reconstruction_after_repartitioning;
@@ -96,7 +97,7 @@ namespace vefs
             TimerOutput::wall_times)
     , triangulation(comm,
                     Triangulation<dim>::limit_level_difference_at_vertices,
-                    mesh_settings<dim>(parameters))
+                    mesh_settings<dim>())
     , cavity(std::make_pair(to_point<dim>(parameters.cavity.cavity_lower),
                             to_point<dim>(parameters.cavity.cavity_upper)))
     , levels(parameters.mesh,
