@@ -15,6 +15,7 @@
 //   coarsening).
 // 1 and 2 ranks print the same.
 
+#include "circle_band.h"
 #include "unit_test.h"
 
 #include <deal.II/base/function.h>
@@ -36,24 +37,6 @@ namespace
 {
   const double       radius        = 0.2;
   const unsigned int lattice_level = 7;
-
-  /** A circle's signed distance, negative inside (in the liquid). */
-  class Circle : public Function<2>
-  {
-  public:
-    explicit Circle(const Point<2> &centre)
-      : centre(centre)
-    {
-    }
-    double
-    value(const Point<2> &p, const unsigned int) const override
-    {
-      return p.distance(centre) - radius;
-    }
-
-  private:
-    const Point<2> centre;
-  };
 
   /**
    * The level of the cell around each centre of the uniform level-7
@@ -90,23 +73,6 @@ namespace
     return count;
   }
 
-  /** The lowest level of the cells that @p circle crosses. */
-  unsigned int
-  coarsest_cut_level(const Triangulation<2> &mesh, const Function<2> &circle)
-  {
-    unsigned int coarsest = numbers::invalid_unsigned_int;
-    for (const auto &cell : mesh.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          bool inside = false, outside = false;
-          for (const unsigned int v : cell->vertex_indices())
-            (circle.value(cell->vertex(v)) < 0 ? inside : outside) = true;
-          if (inside && outside)
-            coarsest =
-              std::min(coarsest, static_cast<unsigned int>(cell->level()));
-        }
-    return Utilities::MPI::min(coarsest, MPI_COMM_WORLD);
-  }
 } // namespace
 
 int
@@ -118,38 +84,27 @@ main(int argc, char **argv)
       comm,
       Triangulation<2>::limit_level_difference_at_vertices);
     GridGenerator::hyper_cube(mesh, 0, 1);
-    vefs::MeshParameters parameters;
-    parameters.min_level            = 2;
-    parameters.bulk_level           = 2;
-    parameters.max_level            = 6;
-    parameters.band_width           = 2;
-    parameters.automatic_band_width = false;
-    parameters.band_placement       = vefs::BandPlacement::widened;
+    const vefs::MeshParameters parameters =
+      unit_test::circle_band_parameters(vefs::BandPlacement::widened);
     mesh.refine_global(parameters.min_level);
-    vefs::CavityParameters cavity;
-    cavity.cavity_lower        = {0, 0};
-    cavity.cavity_upper        = {1, 1};
-    cavity.coarse_subdivisions = {1, 1};
-    const vefs::MeshLevels levels(parameters, cavity, 2, 1.);
+    const vefs::MeshLevels levels = unit_test::unit_square_levels(parameters);
 
     vefs::TransportedFields<2> fields(mesh, false, false, {});
     fields.setup_dofs();
-    const Functions::ZeroFunction<2> velocity(2);
-    vefs::LevelSetGradient<2>        gradient;
-    const auto   linear = vefs::LevelSetInterpolation::linear;
-    const Circle present(Point<2>(0.5, 0.3)), moved(Point<2>(0.5, 0.55));
-    // The band of the present circle: a change refines by one level.
-    for (unsigned int cycle = 0;
-         cycle < parameters.max_level - parameters.min_level;
-         ++cycle)
-      {
-        fields.interpolate(present, velocity);
-        gradient.reinit(fields);
-        vefs::adapt_mesh(mesh, fields, &gradient, levels, linear);
-      }
-    fields.interpolate(moved, velocity);
-    gradient.reinit(fields);
-    const unsigned int coarsest = coarsest_cut_level(mesh, moved);
+    vefs::LevelSetGradient<2> gradient;
+    const auto                linear = vefs::LevelSetInterpolation::linear;
+    const unit_test::CircleDistance present(Point<2>(0.5, 0.3), radius),
+      moved(Point<2>(0.5, 0.55), radius);
+    unit_test::adapt_to_band(mesh,
+                             fields,
+                             gradient,
+                             parameters,
+                             levels,
+                             present);
+    // The surface moved between remaps: the level set of the moved circle on
+    // the present band's mesh.
+    fields.interpolate(moved, Functions::ZeroFunction<2>(2));
+    const unsigned int coarsest = unit_test::coarsest_cut_level(mesh, moved);
 
     // The remap's cycles.
     unsigned int changes = 0, coarsened_first = 0, coarsened_later = 0;

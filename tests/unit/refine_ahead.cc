@@ -15,6 +15,7 @@
 // Each run starts from the same mesh, in the scenes' mode: the first change
 // also coarsens the present band. 1 and 2 ranks print the same.
 
+#include "circle_band.h"
 #include "unit_test.h"
 
 #include <deal.II/base/function.h>
@@ -42,34 +43,9 @@ namespace
   vefs::MeshParameters
   mesh_parameters()
   {
-    vefs::MeshParameters parameters;
-    parameters.min_level            = 2;
-    parameters.bulk_level           = 2;
-    parameters.max_level            = 6;
-    parameters.band_width           = 2;
-    parameters.automatic_band_width = false;
-    parameters.band_placement       = vefs::BandPlacement::predicted_one_change;
-    parameters.automatic_band_miss_tolerance = false;
-    return parameters;
+    return unit_test::circle_band_parameters(
+      vefs::BandPlacement::predicted_one_change);
   }
-
-  /** A circle's signed distance, negative inside (in the liquid). */
-  class Circle : public Function<2>
-  {
-  public:
-    explicit Circle(const Point<2> &centre)
-      : centre(centre)
-    {
-    }
-    double
-    value(const Point<2> &p, const unsigned int) const override
-    {
-      return p.distance(centre) - radius;
-    }
-
-  private:
-    const Point<2> centre;
-  };
 
   struct Outcome
   {
@@ -78,30 +54,6 @@ namespace
     unsigned int       changes;
     vefs::SurfaceCells ahead;
   };
-
-  /**
-   * The lowest level of the cells that @p circle crosses: its signed
-   * distance, evaluated at their vertices, takes both signs.
-   */
-  unsigned int
-  coarsest_cut_level(const Triangulation<2> &triangulation,
-                     const Function<2>      &circle)
-  {
-    unsigned int coarsest = numbers::invalid_unsigned_int;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          std::vector<double> psi;
-          for (const unsigned int v : cell->vertex_indices())
-            psi.push_back(circle.value(cell->vertex(v)));
-          const auto [lowest, highest] =
-            std::minmax_element(psi.begin(), psi.end());
-          if (*lowest < 0 && *highest > 0)
-            coarsest =
-              std::min(coarsest, static_cast<unsigned int>(cell->level()));
-        }
-    return Utilities::MPI::min(coarsest, MPI_COMM_WORLD);
-  }
 
   /**
    * From the mesh adapted to the present circle, the refinement ahead of the
@@ -117,46 +69,40 @@ namespace
     GridGenerator::hyper_cube(triangulation, 0, 1);
     const vefs::MeshParameters parameters = mesh_parameters();
     triangulation.refine_global(parameters.min_level);
-    vefs::CavityParameters cavity;
-    cavity.cavity_lower        = {0, 0};
-    cavity.cavity_upper        = {1, 1};
-    cavity.coarse_subdivisions = {1, 1};
-    const vefs::MeshLevels levels(parameters, cavity, 2, 1.);
+    const vefs::MeshLevels levels = unit_test::unit_square_levels(parameters);
 
     vefs::TransportedFields<2> fields(triangulation, false, false, {});
     fields.setup_dofs();
+    vefs::LevelSetGradient<2>       gradient;
+    const unit_test::CircleDistance present(present_centre, radius),
+      ahead(ahead_centre, radius);
+    unit_test::adapt_to_band(triangulation,
+                             fields,
+                             gradient,
+                             parameters,
+                             levels,
+                             present);
+    // The predicted surface's level set on the mesh of the present band.
     const Functions::ZeroFunction<2> velocity(2);
-    vefs::LevelSetGradient<2>        gradient;
-    const auto linear = vefs::LevelSetInterpolation::linear;
-    // The present band: each change refines one level; the exact level set
-    // on the new mesh after each.
-    for (unsigned int cycle = 0;
-         cycle < parameters.max_level - parameters.min_level;
-         ++cycle)
-      {
-        fields.interpolate(Circle(present_centre), velocity);
-        gradient.reinit(fields);
-        vefs::adapt_mesh(triangulation, fields, &gradient, levels, linear);
-      }
-    fields.interpolate(Circle(ahead_centre), velocity);
+    fields.interpolate(ahead, velocity);
     vefs::TransportedFields<2>::VectorType surface_ahead = fields.vector();
-    fields.interpolate(Circle(present_centre), velocity);
-    gradient.reinit(fields);
+    fields.interpolate(present, velocity);
 
     vefs::CoarsenedDetail<2> coarsened_detail;
     Outcome                  outcome;
     outcome.coarsest_level =
-      coarsest_cut_level(triangulation, Circle(ahead_centre));
-    outcome.changes = vefs::refine_ahead_of_surface(triangulation,
-                                                    fields,
-                                                    gradient,
-                                                    levels,
-                                                    max_cycles,
-                                                    linear,
-                                                    surface_ahead,
-                                                    true,
-                                                    miss_tolerance,
-                                                    coarsened_detail);
+      unit_test::coarsest_cut_level(triangulation, ahead);
+    outcome.changes =
+      vefs::refine_ahead_of_surface(triangulation,
+                                    fields,
+                                    gradient,
+                                    levels,
+                                    max_cycles,
+                                    vefs::LevelSetInterpolation::linear,
+                                    surface_ahead,
+                                    true,
+                                    miss_tolerance,
+                                    coarsened_detail);
     outcome.ahead =
       vefs::count_surface_cells(fields, surface_ahead, parameters.max_level);
     return outcome;

@@ -12,6 +12,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/grid/grid_generator.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -214,6 +215,56 @@ namespace unit_test
             cell->set_refine_flag();
         triangulation.execute_coarsening_and_refinement();
       }
+  }
+
+  /** A circle's signed distance, negative inside (in the liquid). */
+  class CircleDistance : public dealii::Function<2>
+  {
+  public:
+    CircleDistance(const dealii::Point<2> &centre, const double radius)
+      : centre(centre)
+      , radius(radius)
+    {
+    }
+
+    double
+    value(const dealii::Point<2> &p, const unsigned int) const override
+    {
+      return p.distance(centre) - radius;
+    }
+
+  private:
+    const dealii::Point<2> centre;
+    const double           radius;
+  };
+
+  /**
+   * The lowest level, over all ranks, of the cells that the zero set of
+   * @p psi crosses: its values at their vertices take both signs.
+   */
+  template <int dim>
+  unsigned int
+  coarsest_cut_level(
+    const dealii::parallel::distributed::Triangulation<dim> &triangulation,
+    const dealii::Function<dim>                             &psi)
+  {
+    unsigned int coarsest = dealii::numbers::invalid_unsigned_int;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          bool inside = false, outside = false;
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const double value = psi.value(cell->vertex(v));
+              inside |= value < 0;
+              outside |= value > 0;
+            }
+          if (inside && outside)
+            coarsest =
+              std::min(coarsest, static_cast<unsigned int>(cell->level()));
+        }
+    return dealii::Utilities::MPI::min(coarsest,
+                                       triangulation.get_communicator());
   }
 } // namespace unit_test
 
