@@ -90,7 +90,7 @@ namespace vefs
               if (advected_gradient)
                 {
                   const Tensor<1, dim> gradient =
-                    advected_gradient->at(cell, v);
+                    advected_gradient->at_entry(entries[v]);
                   for (unsigned int d = 0; d < dim; ++d)
                     values[1 + d][v] = gradient[d];
                 }

@@ -57,13 +57,16 @@ namespace vefs
     }
 
     /**
-     * At vertex @p v of a cell of the fields' DoFHandler, owned or ghost.
+     * At the vertex whose TransportedFields::vertex_entries() entry is
+     * @p first (owned or ghost): the gradient has the fields' layout.
      */
-    template <typename CellIterator>
     Tensor<1, dim>
-    at(const CellIterator &cell, const unsigned int v) const
+    at_entry(const unsigned int first) const
     {
-      return TransportedFields<dim>::velocity_slots_at(gradient, cell, v);
+      Tensor<1, dim> value;
+      for (unsigned int d = 0; d < dim; ++d)
+        value[d] = gradient.local_element(first + d);
+      return value;
     }
 
     /** Hanging nodes and ghost entries consistent after a change. */
