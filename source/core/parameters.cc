@@ -181,7 +181,7 @@ namespace vefs
                       stiff_solid_under_gravity,
                       dimension);
     solver.resolve(stiff_solid_under_gravity);
-    flow.resolve(regime, material.has_dumbbells());
+    flow.resolve(regime, material.has_dumbbells(), stiff_solid_under_gravity);
   }
 
   double

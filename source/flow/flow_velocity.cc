@@ -214,7 +214,7 @@ namespace vefs
                           TransportedFields<dim>::velocity_slots(initial,
                                                                  node));
     fields.finalize();
-    if (parameters.flow.extend_outside_velocity)
+    if (parameters.flow.extends_outside_velocity())
       unflag_nodes_outside_liquid(fields, known);
     extend_flow_fields(fields,
                        known,
@@ -404,7 +404,7 @@ namespace vefs
     // velocity/stress of cut cells').
     const bool extend_stress =
       fields.has_stress() && parameters.flow.extends_outside_stress();
-    if (parameters.flow.extend_outside_velocity == extend_stress)
+    if (parameters.flow.extends_outside_velocity() == extend_stress)
       {
         if (extend_stress)
           unflag_nodes_outside_liquid(fields, known);

@@ -181,7 +181,8 @@ main()
                vefs::StressInterpolation::limited_cubic &&
              t.remap_distance == 10 && t.redistancing_interval == 0 &&
              !t.volume_correction && f.flow_level_offset == 1 &&
-             f.extension_layers == 7 && f.extend_outside_velocity &&
+             f.extension_layers == 7 &&
+             f.outside_velocity == vefs::OutsideVelocity::extension &&
              f.outside_stress == vefs::OutsideStress::extension &&
              parameters.stress.stress_update ==
                vefs::StressUpdate::exponential &&
@@ -302,8 +303,9 @@ main()
     // extent, unless the band is placed in one change; linear otherwise.
     // 'Solver/Pressure stabilization = automatic': 0.05 for an elastic
     // solid with the macroscopic stress, the second-order scheme and that
-    // weight strain (whatever the band), 0.25 otherwise. An explicit value
-    // stays.
+    // weight strain (whatever the band), 0.25 otherwise; 'Flow/Outside
+    // velocity of cut cells = automatic' extension and solution by the
+    // same rule. An explicit value stays.
     const auto velocity_interpolation = [](const std::string &top,
                                            const std::string &material,
                                            const std::string &time,
@@ -331,7 +333,10 @@ main()
                 : "linear") +
              ", pressure stabilization " +
              std::to_string(parameters.solver.pressure_stabilization)
-               .substr(0, 4);
+               .substr(0, 4) +
+             ", outside velocity " +
+             (parameters.flow.extends_outside_velocity() ? "extension"
+                                                         : "solution");
     };
     // G = eta_p / lambda; with the defaults rho = 1000, g = 9.81 and the
     // cavity 0.28575 m wide the weight strain is 0.467 at G = 2000 Pa,

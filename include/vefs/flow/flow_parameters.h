@@ -8,6 +8,15 @@
 
 namespace vefs
 {
+  /** The velocity at the vertices of cut cells outside the liquid. */
+  enum class OutsideVelocity
+  {
+    /** Resolved by the material's regime: FlowParameters::resolve(). */
+    automatic,
+    solution,
+    extension
+  };
+
   /** The stress at the vertices of cut cells outside the liquid. */
   enum class OutsideStress
   {
@@ -29,10 +38,28 @@ namespace vefs
     /**
      * 'automatic' outside stress becomes extension for an elastic solid
      * (the updated one feeds energy into a body at rest:
-     * doc/oscillating_beam.md) and updated, the seed's, for a liquid.
+     * doc/oscillating_beam.md) and updated, the seed's, for a liquid;
+     * 'automatic' outside velocity extension for an elastic solid that
+     * holds its shape under its weight (the solution there costs a bouncing
+     * body energy at its contact line: doc/bouncing_ball.md) and the
+     * solution otherwise.
      */
     void
-    resolve(const Regime regime, const bool dumbbells);
+    resolve(const Regime regime,
+            const bool   dumbbells,
+            const bool   stiff_solid_under_gravity);
+
+    /**
+     * Whether the vertices of cut cells outside the liquid take the extended
+     * velocity instead of the flow step's ('Outside velocity of cut cells').
+     */
+    bool
+    extends_outside_velocity() const
+    {
+      Assert(outside_velocity != OutsideVelocity::automatic,
+             dealii::ExcMessage("FlowParameters::resolve() first."));
+      return outside_velocity == OutsideVelocity::extension;
+    }
 
     /**
      * Whether the vertices of cut cells outside the liquid take the extended
@@ -53,14 +80,10 @@ namespace vefs
      * Whether the elements that touch a contact wall keep the finest cells
      * ('Finest cells at contact walls'), see FlowElements.
      */
-    bool         finest_at_contact_walls = false;
-    unsigned int extension_layers        = 4;
-    /**
-     * Whether the vertices of cut cells outside the liquid take the extended
-     * velocity instead of the flow step's ('Outside velocity of cut cells').
-     */
-    bool          extend_outside_velocity = false;
-    OutsideStress outside_stress          = OutsideStress::automatic;
+    bool            finest_at_contact_walls = false;
+    unsigned int    extension_layers        = 4;
+    OutsideVelocity outside_velocity        = OutsideVelocity::automatic;
+    OutsideStress   outside_stress          = OutsideStress::automatic;
   };
 
   /** The linear solves and the stabilizations: subsection "Solver". */
