@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <limits>
 
 namespace vefs
@@ -124,6 +125,30 @@ namespace vefs
                         coarse_subdivisions[d] / (1u << level));
     return size;
   }
+
+  template <int dim>
+  bool
+  CavityParameters::on_slip_or_contact_wall(const dealii::Point<dim> &p) const
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double tolerance = 1e-10 * (cavity_upper[d] - cavity_lower[d]);
+        for (unsigned int side = 0; side < 2; ++side)
+          {
+            const WallType type = wall_type[2 * d + side];
+            const double   wall = side == 0 ? cavity_lower[d] : cavity_upper[d];
+            if ((type == WallType::slip || type == WallType::contact) &&
+                std::abs(p[d] - wall) <= tolerance)
+              return true;
+          }
+      }
+    return false;
+  }
+
+  template bool
+  CavityParameters::on_slip_or_contact_wall(const dealii::Point<2> &) const;
+  template bool
+  CavityParameters::on_slip_or_contact_wall(const dealii::Point<3> &) const;
 
   std::vector<unsigned int>
   CavityParameters::periodic_directions() const

@@ -214,12 +214,37 @@ namespace vefs
                           TransportedFields<dim>::velocity_slots(initial,
                                                                  node));
     fields.finalize();
-    if (parameters.flow.extends_outside_velocity())
-      unflag_nodes_outside_liquid(fields, known);
+    unflag_extended_velocity_nodes(fields, known);
     extend_flow_fields(fields,
                        known,
                        parameters.flow.extension_layers,
                        acceleration_components(fields));
+  }
+
+  template <int dim>
+  void
+  FlowVelocity<dim>::unflag_extended_velocity_nodes(
+    const TransportedFields<dim>                &fields,
+    typename TransportedFields<dim>::VectorType &known) const
+  {
+    switch (parameters.flow.resolved_outside_velocity())
+      {
+        case OutsideVelocity::extension:
+          unflag_nodes_outside_liquid(fields, known);
+          break;
+        case OutsideVelocity::extension_at_walls:
+          // The wall holds the solution's normal velocity there at zero,
+          // beside liquid that moves (doc/bouncing_ball.md).
+          unflag_nodes_outside_liquid<dim>(
+            fields,
+            known,
+            [this](const Point<dim> &p) {
+              return parameters.cavity.on_slip_or_contact_wall(p);
+            });
+          break;
+        default:
+          break;
+      }
   }
 
   template <int dim>
@@ -404,7 +429,9 @@ namespace vefs
     // velocity/stress of cut cells').
     const bool extend_stress =
       fields.has_stress() && parameters.flow.extends_outside_stress();
-    if (parameters.flow.extends_outside_velocity() == extend_stress)
+    if (parameters.flow.resolved_outside_velocity() ==
+        (extend_stress ? OutsideVelocity::extension
+                       : OutsideVelocity::solution))
       {
         if (extend_stress)
           unflag_nodes_outside_liquid(fields, known);
@@ -412,15 +439,17 @@ namespace vefs
       }
     else
       {
-        auto known_outside_too = known;
-        unflag_nodes_outside_liquid(fields, known);
+        auto known_stress = known;
+        unflag_extended_velocity_nodes(fields, known);
+        if (extend_stress)
+          unflag_nodes_outside_liquid(fields, known_stress);
         extend_flow_fields(fields,
-                           extend_stress ? known_outside_too : known,
+                           known,
                            layers,
                            velocity_and_acceleration_components(fields));
         if (fields.has_stress())
           extend_flow_fields(fields,
-                             extend_stress ? known : known_outside_too,
+                             known_stress,
                              layers,
                              stress_components(fields));
       }

@@ -256,8 +256,20 @@ namespace vefs
     const TransportedFields<dim>                &fields,
     typename TransportedFields<dim>::VectorType &known)
   {
+    unflag_nodes_outside_liquid<dim>(fields, known, [](const Point<dim> &) {
+      return true;
+    });
+  }
+
+  template <int dim>
+  void
+  unflag_nodes_outside_liquid(
+    const TransportedFields<dim>                          &fields,
+    typename TransportedFields<dim>::VectorType           &known,
+    const std::function<bool(const dealii::Point<dim> &)> &selected)
+  {
     for (const auto &node : fields.nodes())
-      if (fields.level_set(node) > 0)
+      if (fields.level_set(node) > 0 && selected(node.point))
         known(node.dofs[0]) = 0;
     known.update_ghost_values();
   }
@@ -298,4 +310,14 @@ namespace vefs
   template void
   unflag_nodes_outside_liquid<3>(const TransportedFields<3> &,
                                  TransportedFields<3>::VectorType &);
+  template void
+  unflag_nodes_outside_liquid<2>(
+    const TransportedFields<2> &,
+    TransportedFields<2>::VectorType &,
+    const std::function<bool(const dealii::Point<2> &)> &);
+  template void
+  unflag_nodes_outside_liquid<3>(
+    const TransportedFields<3> &,
+    TransportedFields<3>::VectorType &,
+    const std::function<bool(const dealii::Point<3> &)> &);
 } // namespace vefs

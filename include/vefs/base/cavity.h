@@ -51,6 +51,14 @@ namespace vefs
     void
     check(const unsigned int dimension) const;
 
+    /**
+     * Whether @p p lies on a slip or a contact wall, the walls that hold
+     * the normal velocity only (to 1e-10 of the cavity's extent).
+     */
+    template <int dim>
+    bool
+    on_slip_or_contact_wall(const dealii::Point<dim> &p) const;
+
     /** Coordinate directions whose two walls are periodic. */
     std::vector<unsigned int>
     periodic_directions() const;

@@ -14,6 +14,8 @@ namespace vefs
     /** Resolved by the material's regime: FlowParameters::resolve(). */
     automatic,
     solution,
+    /** Extension at the vertices on slip and contact walls. */
+    extension_at_walls,
     extension
   };
 
@@ -39,10 +41,10 @@ namespace vefs
      * 'automatic' outside stress becomes extension for an elastic solid
      * (the updated one feeds energy into a body at rest:
      * doc/oscillating_beam.md) and updated, the seed's, for a liquid;
-     * 'automatic' outside velocity extension for an elastic solid that
-     * holds its shape under its weight (the solution there costs a bouncing
-     * body energy at its contact line: doc/bouncing_ball.md) and the
-     * solution otherwise.
+     * 'automatic' outside velocity: extension for an elastic solid that
+     * holds its shape under its weight (the solution on the wall beside
+     * its contact line costs a bouncing body energy: doc/bouncing_ball.md),
+     * the solution otherwise.
      */
     void
     resolve(const Regime regime,
@@ -50,15 +52,15 @@ namespace vefs
             const bool   stiff_solid_under_gravity);
 
     /**
-     * Whether the vertices of cut cells outside the liquid take the extended
+     * Which vertices of cut cells outside the liquid take the extended
      * velocity instead of the flow step's ('Outside velocity of cut cells').
      */
-    bool
-    extends_outside_velocity() const
+    OutsideVelocity
+    resolved_outside_velocity() const
     {
       Assert(outside_velocity != OutsideVelocity::automatic,
              dealii::ExcMessage("FlowParameters::resolve() first."));
-      return outside_velocity == OutsideVelocity::extension;
+      return outside_velocity;
     }
 
     /**

@@ -118,6 +118,15 @@ namespace vefs
     void
     find_initial_acceleration(TransportedFields<dim> &fields);
 
+    /**
+     * Clear the flag in @p known of the nodes outside the liquid whose
+     * velocity the extension gives ('Flow/Outside velocity of cut cells').
+     */
+    void
+    unflag_extended_velocity_nodes(
+      const TransportedFields<dim>                &fields,
+      typename TransportedFields<dim>::VectorType &known) const;
+
     /** u + @p factor a at every node of @p fields. */
     void
     add_acceleration_to_velocity(TransportedFields<dim> &fields,

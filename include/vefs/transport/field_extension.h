@@ -3,6 +3,7 @@
 
 #include <vefs/fields/transported_fields.h>
 
+#include <functional>
 #include <vector>
 
 namespace vefs
@@ -61,6 +62,17 @@ namespace vefs
   unflag_nodes_outside_liquid(
     const TransportedFields<dim>                &fields,
     typename TransportedFields<dim>::VectorType &known);
+
+  /**
+   * Clear the flag in @p known of the owned nodes outside the liquid whose
+   * point @p selected accepts.
+   */
+  template <int dim>
+  void
+  unflag_nodes_outside_liquid(
+    const TransportedFields<dim>                          &fields,
+    typename TransportedFields<dim>::VectorType           &known,
+    const std::function<bool(const dealii::Point<dim> &)> &selected);
 } // namespace vefs
 
 #endif
