@@ -242,7 +242,8 @@ namespace vefs
               return parameters.cavity.on_slip_or_contact_wall(p);
             });
           break;
-        default:
+        case OutsideVelocity::automatic: // resolved before
+        case OutsideVelocity::solution:
           break;
       }
   }
