@@ -126,8 +126,7 @@ namespace vefs
   {
     double power = 0;
     for (const auto &[dof, unknown] : wall_unknowns)
-      if (in_contact.locally_owned_elements().is_element(dof) &&
-          in_contact(dof) == 1)
+      if (reactions.locally_owned_elements().is_element(dof))
         power += reactions(dof) * velocity(dof);
     return Utilities::MPI::sum(power, in_contact.get_mpi_communicator());
   }
@@ -305,16 +304,18 @@ namespace vefs
     for (const auto &[dof, unknown] : wall_unknowns)
       if (in_contact.locally_owned_elements().is_element(dof))
         {
+          // The reactions the solution felt, though an unknown may be
+          // released now; a free unknown has none.
+          reactions(dof) = in_contact(dof) == 1 ? reaction(dof) : 0.;
           if (in_contact(dof) == 1)
             {
+              force -= unknown.sign * reaction(dof);
               // A wall pushes; one that would pull lets the liquid go.
               if (unknown.sign * reaction(dof) > 0)
                 {
                   in_contact(dof) = 0;
                   changed         = true;
                 }
-              else
-                force -= unknown.sign * reaction(dof);
             }
           else if (unknown.sign * solution(dof) > 0)
             {
@@ -325,9 +326,6 @@ namespace vefs
         }
     in_contact.update_ghost_values();
     force = Utilities::MPI::sum(force, comm);
-    for (const auto &[dof, unknown] : wall_unknowns)
-      if (reactions.locally_owned_elements().is_element(dof))
-        reactions(dof) = reaction(dof);
 
     released_nodes.clear();
     for (const auto &entry : wall_unknowns)

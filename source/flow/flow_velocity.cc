@@ -323,6 +323,10 @@ namespace vefs
     // leaves the set unchanged the solves only have to tell which nodes
     // touch: loosely; the step ends with a full solve that leaves the set
     // unchanged too.
+    // The last update reads the reactions of the step's solution: the
+    // contact force (its impulse the body's momentum change) and the energy
+    // budget's contact power are those the solution felt, also where the
+    // set still changed after the last solve allowed.
     unsigned int iterations = 0;
     bool         full_solve = !flow.touches_contact_walls() ||
                       parameters.solver.contact_solver_tolerance <=
@@ -335,14 +339,12 @@ namespace vefs
             flow.solve(full_solve ? parameters.solver.solver_tolerance
                                   : parameters.solver.contact_solver_tolerance);
         }
-        if (full_solve && solves >= max_contact_iterations)
-          break;
         bool changed;
         {
           TimerOutput::Scope scope(timer, "3 diffusion: contact set");
           changed = flow.update_contact(fields, tau);
         }
-        if (!changed && full_solve)
+        if (full_solve && (!changed || solves >= max_contact_iterations))
           break;
         if (!changed || solves + 1 >= max_contact_iterations)
           full_solve = true;

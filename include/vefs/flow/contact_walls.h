@@ -133,14 +133,15 @@ namespace vefs
 
     /**
      * The power of the reactions of the last update() on the liquid: the
-     * sum over the unknowns in contact of the reaction (the force on the
-     * liquid in the unknown's direction) times @p velocity of the unknown
-     * (W, W/m in 2D). Collective.
+     * sum over the unknowns in contact in the solution it read of the
+     * reaction (the force on the liquid in the unknown's direction) times
+     * @p velocity of the unknown (W, W/m in 2D). Collective.
      */
     double
     power(const std::function<double(types::global_dof_index)> &velocity) const;
 
-    /** Normal force of the walls on the liquid (N, N/m in 2D), >= 0. */
+    /** Normal force of the walls on the liquid in the solution the last
+     * update() read (N, N/m in 2D). */
     double force = 0;
     /** Length (2D) or area (3D) of the wall in contact with the liquid. */
     double contact_measure = 0;
