@@ -206,7 +206,10 @@ namespace vefs
              "a rebuild of the whole mesh; advected_cells ('Band placement "
              "= predicted' only): cells of the mesh the advection ran on; "
              "contact_force: the normal force of the contact walls on the "
-             "liquid over the step (its impulse over the step length).\n"
+             "liquid over the step (its impulse over the step length); "
+             "unsettled_contact_set: 1 where the contact set still changed "
+             "after the step's last allowed solve (10), which the step "
+             "keeps.\n"
           << column_header() << '\n';
         header_written = true;
       }

@@ -585,7 +585,9 @@ namespace vefs
           << std::setw(10) << statistics.volume_change << "  cells "
           << std::setw(7) << statistics.cells << "  " << std::setprecision(3)
           << per_step << " s/step  ~" << std::setprecision(3) << left
-          << " s left" << std::endl;
+          << " s left"
+          << (statistics.unsettled_contact_set ? "  contact set unsettled" : "")
+          << std::endl;
   }
 
   template <int dim>

@@ -80,6 +80,9 @@ namespace vefs
                               [](const auto &s) { return s.contact_force; });
         statistics.add_column(dim == 2 ? "contact_length" : "contact_area",
                               [](const auto &s) { return s.contact_measure; });
+        statistics.add_column("unsettled_contact_set", [](const auto &s) {
+          return s.unsettled_contact_set;
+        });
       }
   }
 
@@ -274,7 +277,8 @@ namespace vefs
       TimerOutput::Scope scope(timer, "3 diffusion: setup");
       flow.setup(domain, time.time() + time.tau());
     }
-    statistics.linear_iterations = solve_step(fields, time.tau());
+    statistics.linear_iterations     = solve_step(fields, time.tau());
+    statistics.unsettled_contact_set = contact_set_settled ? 0 : 1;
     if (parameters.energy_budget && flow.has_contact_walls())
       {
         // The fields still hold u*, the solution u.
@@ -344,6 +348,7 @@ namespace vefs
           TimerOutput::Scope scope(timer, "3 diffusion: contact set");
           changed = flow.update_contact(fields, tau);
         }
+        contact_set_settled = !changed;
         if (full_solve && (!changed || solves >= max_contact_iterations))
           break;
         if (!changed || solves + 1 >= max_contact_iterations)

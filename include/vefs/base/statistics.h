@@ -123,6 +123,12 @@ namespace vefs
     double contact_force   = 0;
     double contact_measure = 0;
     /**
+     * Only with contact walls: 1 if the contact set still changed after
+     * the step's last allowed solve, which the step then keeps (some of its
+     * unknowns in contact pull, or released ones cross the wall), else 0.
+     */
+    unsigned int unsettled_contact_set = 0;
+    /**
      * The walls' reaction in the momentum equation of the step (ContactWalls:
      * the force at the end of the step); kept for the next step's mean.
      */

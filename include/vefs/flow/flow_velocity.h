@@ -165,6 +165,9 @@ namespace vefs
     TimerOutput     &timer;
     /** Solves per step with contact walls, at the most. */
     static constexpr unsigned int max_contact_iterations = 10;
+    /** Whether the last solve_with_contact() left the contact set
+     * unchanged. */
+    bool contact_set_settled = true;
   };
 } // namespace vefs
 
