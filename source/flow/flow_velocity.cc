@@ -277,8 +277,9 @@ namespace vefs
       TimerOutput::Scope scope(timer, "3 diffusion: setup");
       flow.setup(domain, time.time() + time.tau());
     }
-    statistics.linear_iterations     = solve_step(fields, time.tau());
-    statistics.unsettled_contact_set = contact_set_settled ? 0 : 1;
+    const SolveReport solved         = solve_step(fields, time.tau());
+    statistics.linear_iterations     = solved.iterations;
+    statistics.unsettled_contact_set = solved.contact_set_settled ? 0 : 1;
     if (parameters.energy_budget && flow.has_contact_walls())
       {
         // The fields still hold u*, the solution u.
@@ -302,7 +303,7 @@ namespace vefs
   }
 
   template <int dim>
-  unsigned int
+  typename FlowVelocity<dim>::SolveReport
   FlowVelocity<dim>::solve_step(const TransportedFields<dim> &fields,
                                 const double                  tau)
   {
@@ -318,7 +319,7 @@ namespace vefs
   }
 
   template <int dim>
-  unsigned int
+  typename FlowVelocity<dim>::SolveReport
   FlowVelocity<dim>::solve_with_contact(const TransportedFields<dim> &fields,
                                         const double                  tau)
   {
@@ -331,15 +332,15 @@ namespace vefs
     // contact force (its impulse the body's momentum change) and the energy
     // budget's contact power are those the solution felt, also where the
     // set still changed after the last solve allowed.
-    unsigned int iterations = 0;
-    bool         full_solve = !flow.touches_contact_walls() ||
+    SolveReport report;
+    bool        full_solve = !flow.touches_contact_walls() ||
                       parameters.solver.contact_solver_tolerance <=
                         parameters.solver.solver_tolerance;
     for (unsigned int solves = 1;; ++solves)
       {
         {
           TimerOutput::Scope scope(timer, "3 diffusion: solve");
-          iterations +=
+          report.iterations +=
             flow.solve(full_solve ? parameters.solver.solver_tolerance
                                   : parameters.solver.contact_solver_tolerance);
         }
@@ -348,13 +349,13 @@ namespace vefs
           TimerOutput::Scope scope(timer, "3 diffusion: contact set");
           changed = flow.update_contact(fields, tau);
         }
-        contact_set_settled = !changed;
+        report.contact_set_settled = !changed;
         if (full_solve && (!changed || solves >= max_contact_iterations))
           break;
         if (!changed || solves + 1 >= max_contact_iterations)
           full_solve = true;
       }
-    return iterations;
+    return report;
   }
 
   template <int dim>

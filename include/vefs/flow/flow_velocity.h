@@ -69,18 +69,24 @@ namespace vefs
     measure(StepStatistics<dim> &statistics) const override;
 
   private:
-    /**
-     * Assemble the step of length @p tau on the set-up liquid domain and
-     * solve it (solve_with_contact()); the Krylov iterations of all solves.
-     */
-    unsigned int
-    solve_step(const TransportedFields<dim> &fields, const double tau);
+    /** What the solves of one step report. */
+    struct SolveReport
+    {
+      /** Krylov iterations of all solves. */
+      unsigned int iterations = 0;
+      /** Whether the last update left the contact set unchanged. */
+      bool contact_set_settled = true;
+    };
 
     /**
-     * Solve the assembled step, again while the contact set changes; the
-     * Krylov iterations of all solves.
+     * Assemble the step of length @p tau on the set-up liquid domain and
+     * solve it (solve_with_contact()).
      */
-    unsigned int
+    SolveReport
+    solve_step(const TransportedFields<dim> &fields, const double tau);
+
+    /** Solve the assembled step, again while the contact set changes. */
+    SolveReport
     solve_with_contact(const TransportedFields<dim> &fields, const double tau);
 
     /**
@@ -165,9 +171,6 @@ namespace vefs
     TimerOutput     &timer;
     /** Solves per step with contact walls, at the most. */
     static constexpr unsigned int max_contact_iterations = 10;
-    /** Whether the last solve_with_contact() left the contact set
-     * unchanged. */
-    bool contact_set_settled = true;
   };
 } // namespace vefs
 
