@@ -42,6 +42,7 @@ namespace vefs
         n_cells *= subdivisions[d];
       }
     coarse_cells.resize(n_cells);
+    coarse_corners.resize(n_cells);
     for (const auto &cell : triangulation.cell_iterators_on_level(0))
       {
         std::array<unsigned int, dim> i;
@@ -49,7 +50,10 @@ namespace vefs
           i[d] = static_cast<unsigned int>(
             (cell->center()[d] - cavity.lower_bound(d)) /
             cavity.side_length(d) * n_coarse[d]);
-        coarse_cells[coarse_index<dim>(n_coarse, i)] = cell;
+        const unsigned int index = coarse_index<dim>(n_coarse, i);
+        coarse_cells[index]      = cell;
+        coarse_corners[index]    = {cell->vertex(0),
+                                    cell->vertex(cell->n_vertices() - 1)};
       }
   }
 
@@ -75,18 +79,38 @@ namespace vefs
   typename Triangulation<dim>::active_cell_iterator
   BoxMeshLocator<dim>::locate(const Point<dim> &p) const
   {
-    auto cell = coarse_cells[coarse_cell_around(p).first];
+    return locate_with_unit_point(p).cell;
+  }
+
+  template <int dim>
+  typename BoxMeshLocator<dim>::CellAndUnitPoint
+  BoxMeshLocator<dim>::locate_with_unit_point(const Point<dim> &p) const
+  {
+    const unsigned int index = coarse_cell_around(p).first;
+    auto               cell  = coarse_cells[index];
+    auto [lower, upper]      = coarse_corners[index];
     // Children of a hypercube are numbered lexicographically, x fastest.
     while (cell->has_children())
       {
-        const Point<dim> center = cell->center();
-        unsigned int     child  = 0;
+        unsigned int child = 0;
         for (unsigned int d = 0; d < dim; ++d)
-          if (p[d] >= center[d])
-            child |= (1u << d);
+          {
+            const double center = 0.5 * (lower[d] + upper[d]);
+            if (p[d] >= center)
+              {
+                child |= (1u << d);
+                lower[d] = center;
+              }
+            else
+              upper[d] = center;
+          }
         cell = cell->child(child);
       }
-    return cell;
+    Point<dim> xi;
+    for (unsigned int d = 0; d < dim; ++d)
+      xi[d] =
+        std::min(1., std::max(0., (p[d] - lower[d]) / (upper[d] - lower[d])));
+    return {cell, xi};
   }
 
   template <int dim>

@@ -254,15 +254,11 @@ namespace vefs
               Point<dim> p;
               for (unsigned int d = 0; d < dim; ++d)
                 p[d] = coordinates[k + d];
-              const auto cell = locator.locate(p);
+              const auto [cell, xi] = locator.locate_with_unit_point(p);
               AssertThrow(!cell->is_artificial(),
                           ExcMessage("A point p4est places on this rank lies "
                                      "in a cell it does not know."));
-              const auto values =
-                values_in_cell(cell,
-                               BoxMeshLocator<dim>::unit_point(cell, p),
-                               fields,
-                               how);
+              const auto values = values_in_cell(cell, xi, fields, how);
               for (unsigned int c = 0; c < n_values; ++c)
                 answer.push_back(values[c]);
             }
@@ -300,17 +296,13 @@ namespace vefs
       std::vector<unsigned int>     remote;
       for (unsigned int i = 0; i < points.size(); ++i)
         {
-          const auto cell = locator.locate(points[i]);
+          const auto [cell, xi] = locator.locate_with_unit_point(points[i]);
           if (cell->is_artificial())
             {
               remote.push_back(i);
               continue;
             }
-          values[i] =
-            values_in_cell(cell,
-                           BoxMeshLocator<dim>::unit_point(cell, points[i]),
-                           fields,
-                           how);
+          values[i] = values_in_cell(cell, xi, fields, how);
         }
 
       const auto &triangulation = fields.dof_handler.get_triangulation();

@@ -5,6 +5,8 @@
 //   finds (compared where that cell is owned or a ghost; the points in
 //   owned cells, summed over the ranks, are all points);
 // - unit_point() equals MappingQ1::transform_real_to_unit_cell() to 1e-14;
+// - locate_with_unit_point() finds locate()'s cell, with the same unit point
+//   to 1e-14;
 // - owner_rank() is this rank exactly for the points in owned cells and
 //   another rank for the others.
 // And fold_into_cavity() wraps a periodic direction and moves points back
@@ -84,8 +86,8 @@ namespace
     // Steps that are no multiple of any cell size.
     const unsigned int n        = dim == 2 ? 41 : 13;
     unsigned int       n_points = 0, n_owned = 0, n_compared = 0;
-    unsigned int       wrong_cell = 0, wrong_owner = 0;
-    double             unit_point_error = 0;
+    unsigned int       wrong_cell = 0, wrong_owner = 0, wrong_pair_cell = 0;
+    double             unit_point_error = 0, pair_unit_point_error = 0;
     for (unsigned int k = 0; k < std::pow(n, dim); ++k)
       {
         Point<dim>   p;
@@ -98,6 +100,9 @@ namespace
           }
         ++n_points;
         const auto located = locator.locate(p);
+        const auto pair    = locator.locate_with_unit_point(p);
+        if (pair.cell != located)
+          ++wrong_pair_cell;
         const bool owned_here =
           !located->is_artificial() && located->is_locally_owned();
         n_owned += owned_here;
@@ -111,10 +116,14 @@ namespace
         if (cell != located)
           ++wrong_cell;
         else
-          unit_point_error =
-            std::max(unit_point_error,
-                     xi.distance(
-                       vefs::BoxMeshLocator<dim>::unit_point(located, p)));
+          {
+            unit_point_error =
+              std::max(unit_point_error,
+                       xi.distance(
+                         vefs::BoxMeshLocator<dim>::unit_point(located, p)));
+            pair_unit_point_error =
+              std::max(pair_unit_point_error, xi.distance(pair.unit_point));
+          }
       }
 
     const std::string name = std::to_string(dim) + "D, ";
@@ -129,6 +138,12 @@ namespace
     unit_test::check_below(out,
                            name + "unit point - deal.II's",
                            Utilities::MPI::max(unit_point_error, comm),
+                           1e-14);
+    out << name << "locate_with_unit_point(), cells different from locate(): "
+        << Utilities::MPI::sum(wrong_pair_cell, comm) << '\n';
+    unit_test::check_below(out,
+                           name + "its unit point - deal.II's",
+                           Utilities::MPI::max(pair_unit_point_error, comm),
                            1e-14);
     // Compared at least at every point of the owned cells.
     out << name << "compared at all points of owned cells: "

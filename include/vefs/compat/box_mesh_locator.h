@@ -17,7 +17,8 @@ namespace vefs
    * Finds the active cell around a point of a box-shaped cavity meshed by
    * isotropic refinement of a regular grid of axis-aligned coarse cells: the
    * coarse cell follows from the coordinates, each child from a comparison
-   * with its parent's center. Cost: one step per level, no search structure
+   * with its parent's center, which halving the coarse cell's bounds gives
+   * without reading vertices. Cost: one step per level, no search structure
    * to rebuild after the mesh changes (general locators such as
    * RemotePointEvaluation rebuild theirs at every call).
    */
@@ -64,6 +65,21 @@ namespace vefs
     typename Triangulation<dim>::active_cell_iterator
     locate(const Point<dim> &p) const;
 
+    /** An active cell and a point's coordinates in its unit cell. */
+    struct CellAndUnitPoint
+    {
+      typename Triangulation<dim>::active_cell_iterator cell;
+      Point<dim>                                        unit_point;
+    };
+
+    /**
+     * locate() and unit_point() at once, the unit point from the bounds the
+     * walk down the tree halves (the same to round-off; reading the cell's
+     * vertices cost a fifth of the 3D transport's advection).
+     */
+    CellAndUnitPoint
+    locate_with_unit_point(const Point<dim> &p) const;
+
     /**
      * The MPI rank that owns the active cell containing @p p (the cavity's
      * point fold_into_cavity() gives), from p4est's partition: the position
@@ -109,6 +125,8 @@ namespace vefs
     std::array<bool, dim>                                   periodic;
     std::array<bool, 2 * dim>                               contact;
     std::vector<typename Triangulation<dim>::cell_iterator> coarse_cells;
+    /** The lowest and the highest corner of each coarse cell. */
+    std::vector<std::pair<Point<dim>, Point<dim>>> coarse_corners;
   };
 } // namespace vefs
 
