@@ -1,14 +1,16 @@
-// TransportedFields::vertex_entries() (transported_fields.h): the local
-// index of each vertex's first component, component c at entry + c, in
-// place of deal.II's DoFAccessor::vertex_dof_index(v, c) and the global
-// access to the vector that the interpolation at the feet did per
-// component. On make_box_with_finer_patch() (hanging nodes, and on 2 ranks
-// ghost cells across the partition), with the stress and the acceleration
-// (the most components without dumbbells), each component set to a
-// different smooth function: for every owned and ghost cell, vertex and
-// component, the entry's value must equal the value read through
-// vertex_dof_index (exactly: it is the same entry), and the entry's global
-// index must be vertex_dof_index(v, c). 1 and 2 ranks print the same.
+// TransportedFields::vertex_entries() and the accessors that read through
+// it (transported_fields.h; a table that setup_dofs() makes per active
+// cell): the local index of each vertex's first component, component c at
+// entry + c, in place of deal.II's DoFAccessor::vertex_dof_index(v, c) and
+// the global access to the vector. On make_box_with_finer_patch() (hanging
+// nodes, and on 2 ranks ghost cells across the partition), with the stress
+// and the acceleration (the most components without dumbbells), each
+// component set to a different smooth function: for every owned and ghost
+// cell, vertex and component, the entry's value and value_at() must equal
+// the vector read at vertex_dof_index(v, c) (exactly: it is the same
+// entry), and the entry's global index must be vertex_dof_index(v, c).
+// Checked again after a mesh change (every cell with x < 0 refined, then
+// setup_dofs()). 1 and 2 ranks print the same.
 
 #include "unit_test.h"
 
@@ -23,15 +25,14 @@ using namespace dealii;
 
 namespace
 {
+  /** The fields set up on the present mesh, filled, and compared. */
   template <int dim>
   void
-  check(std::ostream &out)
+  compare(vefs::TransportedFields<dim> &fields,
+          const std::string            &label,
+          std::ostream                 &out)
   {
-    const MPI_Comm                            comm = MPI_COMM_WORLD;
-    parallel::distributed::Triangulation<dim> triangulation(comm);
-    unit_test::make_box_with_finer_patch(triangulation);
-
-    vefs::TransportedFields<dim> fields(triangulation, true, true, {});
+    const MPI_Comm comm = MPI_COMM_WORLD;
     fields.setup_dofs();
     const unit_test::Smooth<dim> field(fields.n_components, 0.3);
     for (const auto &node : fields.nodes())
@@ -49,8 +50,10 @@ namespace
           for (const unsigned int v : cell->vertex_indices())
             for (unsigned int c = 0; c < fields.n_components; ++c)
               {
-                if (fields.local_value(entries[v] + c) !=
-                    fields.value_at(cell, v, c))
+                const double value =
+                  fields.vector()(cell->vertex_dof_index(v, c));
+                if (fields.local_value(entries[v] + c) != value ||
+                    fields.value_at(cell, v, c) != value)
                   ++wrong_values;
                 if (fields.partitioner->local_to_global(entries[v] + c) !=
                     cell->vertex_dof_index(v, c))
@@ -58,8 +61,6 @@ namespace
               }
         }
 
-    const std::string label = std::to_string(dim) + "D, ";
-    out << label << "components per vertex: " << fields.n_components << '\n';
     unit_test::check_zero(out,
                           label + "values that differ from vertex_dof_index's",
                           Utilities::MPI::sum(wrong_values, comm));
@@ -68,6 +69,7 @@ namespace
                             "entries not at vertex_dof_index's global index",
                           Utilities::MPI::sum(wrong_indices, comm));
     // Every cell is owned on one rank; on 2 ranks each also sees ghosts.
+    const auto &triangulation = fields.dof_handler.get_triangulation();
     out << label << "every cell checked: "
         << (Utilities::MPI::sum(owned_cells, comm) ==
                 triangulation.n_global_active_cells()
@@ -80,6 +82,26 @@ namespace
               ? "yes"
               : "NO")
         << '\n';
+  }
+
+  template <int dim>
+  void
+  check(std::ostream &out)
+  {
+    const MPI_Comm                            comm = MPI_COMM_WORLD;
+    parallel::distributed::Triangulation<dim> triangulation(comm);
+    unit_test::make_box_with_finer_patch(triangulation);
+
+    vefs::TransportedFields<dim> fields(triangulation, true, true, {});
+    const std::string            label = std::to_string(dim) + "D, ";
+    out << label << "components per vertex: " << fields.n_components << '\n';
+    compare(fields, label, out);
+
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->center()[0] < 0)
+        cell->set_refine_flag();
+    triangulation.execute_coarsening_and_refinement();
+    compare(fields, label + "after a mesh change, ", out);
   }
 } // namespace
 

@@ -15,6 +15,7 @@
 #include <vefs/compat/local_constraint_lines.h>
 
 #include <array>
+#include <type_traits>
 #include <vector>
 
 namespace vefs
@@ -235,19 +236,9 @@ namespace vefs
     Tensor<1, dim>
     velocity_at(const CellIterator &cell, const unsigned int v) const
     {
-      return velocity_slots_at(fields, cell, v);
-    }
-
-    /** The velocity slots of @p vector (this layout) at a cell's vertex. */
-    template <typename CellIterator>
-    static Tensor<1, dim>
-    velocity_slots_at(const VectorType   &vector,
-                      const CellIterator &cell,
-                      const unsigned int  v)
-    {
       Tensor<1, dim> u;
       for (unsigned int d = 0; d < dim; ++d)
-        u[d] = vector(cell->vertex_dof_index(v, d));
+        u[d] = fields.local_element(local_entry(cell, v, d));
       return u;
     }
 
@@ -255,7 +246,7 @@ namespace vefs
     double
     level_set_at(const CellIterator &cell, const unsigned int v) const
     {
-      return fields(cell->vertex_dof_index(v, level_set_component));
+      return fields.local_element(local_entry(cell, v, level_set_component));
     }
 
     /** Only if has_stress(). */
@@ -265,8 +256,8 @@ namespace vefs
     {
       SymmetricTensor<2, dim> sigma;
       for (unsigned int i = 0; i < n_stress_components; ++i)
-        sigma.access_raw_entry(i) =
-          fields(cell->vertex_dof_index(v, first_stress_component + i));
+        sigma.access_raw_entry(i) = fields.local_element(
+          local_entry(cell, v, first_stress_component + i));
       return sigma;
     }
 
@@ -279,8 +270,8 @@ namespace vefs
     {
       Tensor<1, dim> q;
       for (unsigned int d = 0; d < dim; ++d)
-        q[d] = fields(
-          cell->vertex_dof_index(v, first_dumbbell_component + dim * i + d));
+        q[d] = fields.local_element(
+          local_entry(cell, v, first_dumbbell_component + dim * i + d));
       return q;
     }
 
@@ -291,8 +282,8 @@ namespace vefs
     {
       Tensor<1, dim> a;
       for (unsigned int d = 0; d < dim; ++d)
-        a[d] =
-          fields(cell->vertex_dof_index(v, first_acceleration_component + d));
+        a[d] = fields.local_element(
+          local_entry(cell, v, first_acceleration_component + d));
       return a;
     }
 
@@ -302,28 +293,59 @@ namespace vefs
              const unsigned int  v,
              const unsigned int  c) const
     {
-      return fields(cell->vertex_dof_index(v, c));
+      return fields.local_element(local_entry(cell, v, c));
     }
 
     /**
      * Local indices (owned or ghost, in the numbering of partitioner) of the
      * first component at each vertex of a cell: component c of vertex v is
      * entry first[v] + c, the components of a vertex being numbered in a row.
-     * One translation per vertex for walks that read many components at
-     * points (the feet of the characteristics).
+     * For an active cell a row of the table setup_dofs() makes; for walks
+     * that read many components at points (the feet of the characteristics).
      */
     using VertexEntries =
       std::array<unsigned int, GeometryInfo<dim>::vertices_per_cell>;
+    using DoFCellIterator = typename DoFHandler<dim>::active_cell_iterator;
 
     /** For an owned or ghost @p cell. */
     template <typename CellIterator>
     VertexEntries
     vertex_entries(const CellIterator &cell) const
     {
-      VertexEntries first;
-      for (const unsigned int v : cell->vertex_indices())
-        first[v] = partitioner->global_to_local(cell->vertex_dof_index(v, 0));
-      return first;
+      if constexpr (std::is_same_v<CellIterator, DoFCellIterator>)
+        {
+          AssertIndexRange(cell->active_cell_index(), entries_of_cells.size());
+          return entries_of_cells[cell->active_cell_index()];
+        }
+      else
+        {
+          VertexEntries first;
+          for (const unsigned int v : cell->vertex_indices())
+            first[v] =
+              partitioner->global_to_local(cell->vertex_dof_index(v, 0));
+          return first;
+        }
+    }
+
+    /**
+     * Local index (owned or ghost) of component @p c at vertex @p v of an
+     * owned or ghost @p cell (or line): for active cells from the table
+     * setup_dofs() makes (in 3D deal.II finds a vertex of a cell through its
+     * faces and lines).
+     */
+    template <typename CellIterator>
+    unsigned int
+    local_entry(const CellIterator &cell,
+                const unsigned int  v,
+                const unsigned int  c) const
+    {
+      if constexpr (std::is_same_v<CellIterator, DoFCellIterator>)
+        {
+          AssertIndexRange(cell->active_cell_index(), entries_of_cells.size());
+          return entries_of_cells[cell->active_cell_index()][v] + c;
+        }
+      else
+        return partitioner->global_to_local(cell->vertex_dof_index(v, c));
     }
 
     /** For a vertex whose degrees of freedom this rank owns. */
@@ -513,7 +535,10 @@ namespace vefs
 
     const std::vector<unsigned int> periodic_directions;
     std::vector<Node>               owned_nodes;
-    VectorType                      fields;
+    /** vertex_entries() of each owned or ghost active cell, by its active
+     * cell index; made by setup_dofs(). */
+    std::vector<VertexEntries> entries_of_cells;
+    VectorType                 fields;
     /**
      * Whether every source of an owned constrained entry is owned or a ghost
      * (then distribute_constraints() uses the local lines below).
