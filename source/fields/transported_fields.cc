@@ -56,9 +56,8 @@ namespace vefs
                             VertexEntries());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
-        for (const unsigned int v : cell->vertex_indices())
-          entries_of_cells[cell->active_cell_index()][v] =
-            partitioner->global_to_local(cell->vertex_dof_index(v, 0));
+        entries_of_cells[cell->active_cell_index()] =
+          look_up_vertex_entries(cell);
 
     // FE_Q(1)^n_components: the i-th degree of freedom of a vertex belongs to
     // component i, so one vertex carries all fields of one node; deal.II

@@ -313,18 +313,9 @@ namespace vefs
     vertex_entries(const CellIterator &cell) const
     {
       if constexpr (std::is_same_v<CellIterator, DoFCellIterator>)
-        {
-          AssertIndexRange(cell->active_cell_index(), entries_of_cells.size());
-          return entries_of_cells[cell->active_cell_index()];
-        }
+        return table_row(cell);
       else
-        {
-          VertexEntries first;
-          for (const unsigned int v : cell->vertex_indices())
-            first[v] =
-              partitioner->global_to_local(cell->vertex_dof_index(v, 0));
-          return first;
-        }
+        return look_up_vertex_entries(cell);
     }
 
     /**
@@ -340,10 +331,7 @@ namespace vefs
                 const unsigned int  c) const
     {
       if constexpr (std::is_same_v<CellIterator, DoFCellIterator>)
-        {
-          AssertIndexRange(cell->active_cell_index(), entries_of_cells.size());
-          return entries_of_cells[cell->active_cell_index()][v] + c;
-        }
+        return table_row(cell)[v] + c;
       else
         return partitioner->global_to_local(cell->vertex_dof_index(v, c));
     }
@@ -532,6 +520,25 @@ namespace vefs
     /** The owned lines of @p constraints in local vector indices. */
     void
     localize_constraints();
+
+    /** The row of the vertex table for an owned or ghost active @p cell. */
+    const VertexEntries &
+    table_row(const DoFCellIterator &cell) const
+    {
+      AssertIndexRange(cell->active_cell_index(), entries_of_cells.size());
+      return entries_of_cells[cell->active_cell_index()];
+    }
+
+    /** vertex_entries() from deal.II's numbering (what the table holds). */
+    template <typename CellIterator>
+    VertexEntries
+    look_up_vertex_entries(const CellIterator &cell) const
+    {
+      VertexEntries first;
+      for (const unsigned int v : cell->vertex_indices())
+        first[v] = partitioner->global_to_local(cell->vertex_dof_index(v, 0));
+      return first;
+    }
 
     const std::vector<unsigned int> periodic_directions;
     std::vector<Node>               owned_nodes;
