@@ -907,14 +907,16 @@ namespace vefs
           const auto transport_cell = fields.cell_of(cell);
           for (const unsigned int v : cell->vertex_indices())
             {
-              const auto first = transport_cell->vertex_dof_index(v, 0);
-              if (!fields.owned_dofs.is_element(first))
+              // Local entries below the owned size are owned.
+              const unsigned int first =
+                fields.local_entry(transport_cell, v, 0);
+              if (first >= fields.partitioner->locally_owned_size())
                 continue;
               Tensor<1, dim> u;
               for (unsigned int d = 0; d < dim; ++d)
                 u[d] = solution(cell->vertex_dof_index(v, d, liquid_index));
               fields.set_velocity_at(transport_cell, v, u);
-              known(first) = 1;
+              known.local_element(first) = 1;
             }
         }
     fields.finalize();

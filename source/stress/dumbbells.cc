@@ -292,14 +292,14 @@ namespace vefs
         const SymmetricTensor<2, dim> carried =
           symmetrize(E * c * transpose(E));
         const double weight = cell->measure();
-        sum(cell->vertex_dof_index(v, 0)) += weight;
+        fields.entry_at(sum, cell, v, 0) += weight;
         for (unsigned int k = 0; k < dim * dim; ++k)
-          sum(cell->vertex_dof_index(v, first_map + k)) +=
+          fields.entry_at(sum, cell, v, first_map + k) +=
             weight * E[k / dim][k % dim];
         for (unsigned int k = 0;
              k < TransportedFields<dim>::n_stress_components;
              ++k)
-          sum(cell->vertex_dof_index(v, first_moment + k)) +=
+          fields.entry_at(sum, cell, v, first_moment + k) +=
             weight * carried.access_raw_entry(k);
       });
     sum.compress(VectorOperation::add);

@@ -122,7 +122,7 @@ namespace vefs
                            conformation_trace(fields.stress_at(cell, v)));
             for (const unsigned int v : cell->vertex_indices())
               {
-                double &entry = largest(cell->vertex_dof_index(v, 0));
+                double &entry = fields.entry_at(largest, cell, v, 0);
                 entry         = std::max(entry, in_liquid);
               }
           }
@@ -189,7 +189,7 @@ namespace vefs
               const BoxCellValues<dim> &values = liquid_values.reinit(cell);
               for (const unsigned int v : cell->vertex_indices())
                 for (unsigned int d = 0; d < dim; ++d)
-                  vertex_u[v][d] = velocity(cell->vertex_dof_index(v, d));
+                  vertex_u[v][d] = fields.entry_at(velocity, cell, v, d);
               Tensor<2, dim> mean;
               double         volume = 0;
               for (unsigned int q = 0; q < values.size(); ++q)
@@ -212,7 +212,7 @@ namespace vefs
                   grad_u[v] = 0;
                   for (const unsigned int w : cell->vertex_indices())
                     for (unsigned int d = 0; d < dim; ++d)
-                      grad_u[v][d] += velocity(cell->vertex_dof_index(w, d)) *
+                      grad_u[v][d] += fields.entry_at(velocity, cell, w, d) *
                                       vertex_values.gradient[v][w];
                 }
             }
@@ -265,9 +265,9 @@ namespace vefs
         const SymmetricTensor<2, dim> updated =
           rheology.updated_stress(fields.stress_at(cell, v), L, tau);
         const double weight = cell->measure();
-        sum(cell->vertex_dof_index(v, 0)) += weight;
+        fields.entry_at(sum, cell, v, 0) += weight;
         for (unsigned int i = 0; i < n_stress; ++i)
-          sum(cell->vertex_dof_index(v, first + i)) +=
+          fields.entry_at(sum, cell, v, first + i) +=
             weight * updated.access_raw_entry(i);
       });
     sum.compress(VectorOperation::add);
@@ -310,7 +310,7 @@ namespace vefs
             {
               vertex_sigma[v] = fields.stress_at(cell, v);
               for (unsigned int d = 0; d < dim; ++d)
-                vertex_u[v][d] = velocity(cell->vertex_dof_index(v, d));
+                vertex_u[v][d] = fields.entry_at(velocity, cell, v, d);
             }
           const BoxCellValues<dim> &values = liquid_values.reinit(cell);
           for (unsigned int q = 0; q < values.size(); ++q)

@@ -28,14 +28,12 @@ namespace vefs
           if (cell->is_locally_owned())
             for (const unsigned int v : cell->vertex_indices())
               {
-                const unsigned int first =
-                  partitioner.global_to_local(cell->vertex_dof_index(v, 0));
+                const unsigned int first = fields.local_entry(cell, v, 0);
                 if (vertex_of_local[first] == numbers::invalid_unsigned_int)
                   {
                     vertex_of_local[first] = n_vertices();
                     for (unsigned int c = 0; c < n_components; ++c)
-                      vertex_dofs.push_back(partitioner.global_to_local(
-                        cell->vertex_dof_index(v, c)));
+                      vertex_dofs.push_back(fields.local_entry(cell, v, c));
                   }
                 cell_vertices.push_back(vertex_of_local[first]);
               }

@@ -227,6 +227,7 @@ namespace vefs
     template <int dim>
     double
     level_set_slope(
+      const TransportedFields<dim>                         &fields,
       const typename TransportedFields<dim>::VectorType    &level_set,
       const typename DoFHandler<dim>::active_cell_iterator &cell)
     {
@@ -238,7 +239,7 @@ namespace vefs
       Tensor<1, dim>       gradient;
       for (const unsigned int v : cell->vertex_indices())
         for (unsigned int d = 0; d < dim; ++d)
-          gradient[d] += level_set(cell->vertex_dof_index(v, c)) *
+          gradient[d] += fields.entry_at(level_set, cell, v, c) *
                          internal::q1_shape(v, center, d) / extent[d];
       return gradient.norm();
     }
@@ -246,16 +247,19 @@ namespace vefs
     /** The level set slot of @p level_set on @p cell. */
     template <int dim>
     MeshLevels::CellLevelSet
-    cell_level_set(const typename TransportedFields<dim>::VectorType &level_set,
+    cell_level_set(const TransportedFields<dim>                      &fields,
+                   const typename TransportedFields<dim>::VectorType &level_set,
                    const typename DoFHandler<dim>::active_cell_iterator &cell)
     {
       constexpr unsigned int   c = TransportedFields<dim>::level_set_component;
       MeshLevels::CellLevelSet psi{std::numeric_limits<double>::max(),
                                    -std::numeric_limits<double>::max(),
-                                   level_set_slope<dim>(level_set, cell)};
+                                   level_set_slope<dim>(fields,
+                                                        level_set,
+                                                        cell)};
       for (const unsigned int v : cell->vertex_indices())
         {
-          const double value = level_set(cell->vertex_dof_index(v, c));
+          const double value = fields.entry_at(level_set, cell, v, c);
           psi.lowest         = std::min(psi.lowest, value);
           psi.highest        = std::max(psi.highest, value);
         }
@@ -268,7 +272,8 @@ namespace vefs
      */
     template <int dim>
     double
-    local_motion(const typename TransportedFields<dim>::VectorType &psi,
+    local_motion(const TransportedFields<dim>                      &fields,
+                 const typename TransportedFields<dim>::VectorType &psi,
                  const typename TransportedFields<dim>::VectorType &psi_ahead,
                  const typename DoFHandler<dim>::active_cell_iterator &cell)
     {
@@ -276,8 +281,9 @@ namespace vefs
       double                 motion = 0;
       for (const unsigned int v : cell->vertex_indices())
         {
-          const auto dof = cell->vertex_dof_index(v, c);
-          motion = std::max(motion, std::abs(psi_ahead(dof) - psi(dof)));
+          motion = std::max(motion,
+                            std::abs(fields.entry_at(psi_ahead, cell, v, c) -
+                                     fields.entry_at(psi, cell, v, c)));
         }
       return motion;
     }
@@ -370,20 +376,24 @@ namespace vefs
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const auto present = cell_level_set<dim>(fields.vector(), cell);
+          const auto present =
+            cell_level_set<dim>(fields, fields.vector(), cell);
           std::pair<unsigned int, unsigned int> allowed;
           double                                lowest = present.lowest;
           if (!surface_ahead)
             allowed = levels.allowed_levels(present);
           else
             {
-              const auto   ahead = cell_level_set<dim>(*surface_ahead, cell);
-              const double motion =
-                local_motion<dim>(fields.vector(), *surface_ahead, cell);
-              allowed = present_band == PresentBand::kept
-                          ? levels.allowed_levels(present, ahead, motion)
-                          : levels.allowed_levels(ahead, motion);
-              lowest  = ahead.lowest;
+              const auto ahead =
+                cell_level_set<dim>(fields, *surface_ahead, cell);
+              const double motion = local_motion<dim>(fields,
+                                                      fields.vector(),
+                                                      *surface_ahead,
+                                                      cell);
+              allowed             = present_band == PresentBand::kept
+                                      ? levels.allowed_levels(present, ahead, motion)
+                                      : levels.allowed_levels(ahead, motion);
+              lowest              = ahead.lowest;
             }
           // Liquid cells (a vertex with psi < 0) are remembered for the
           // partitioner (children inherit it): the flow is solved on
@@ -499,7 +509,7 @@ namespace vefs
           bool inside = false, outside = false;
           for (const unsigned int v : cell->vertex_indices())
             {
-              const double psi = level_set(cell->vertex_dof_index(v, c));
+              const double psi = fields.entry_at(level_set, cell, v, c);
               inside |= psi < 0;
               outside |= psi > 0;
             }

@@ -163,7 +163,7 @@ namespace vefs
             }
           if (cut)
             for (const unsigned int v : cell->vertex_indices())
-              cut_vertex(cell->vertex_dof_index(v, c)) = 1;
+              fields.entry_at(cut_vertex, cell, v, c) = 1;
         }
     cut_vertex.compress(VectorOperation::max);
     cut_vertex.update_ghost_values();
@@ -184,10 +184,10 @@ namespace vefs
               bool touches = false;
               for (const unsigned int v : cell->vertex_indices())
                 touches =
-                  touches || cut_vertex(cell->vertex_dof_index(v, c)) > 0;
+                  touches || fields.entry_at(cut_vertex, cell, v, c) > 0;
               if (touches)
                 for (const unsigned int v : cell->vertex_indices())
-                  grown(cell->vertex_dof_index(v, c)) = 1;
+                  fields.entry_at(grown, cell, v, c) = 1;
             }
         grown.compress(VectorOperation::max);
         grown.update_ghost_values();

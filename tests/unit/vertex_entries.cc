@@ -6,9 +6,10 @@
 // nodes, and on 2 ranks ghost cells across the partition), with the stress
 // and the acceleration (the most components without dumbbells), each
 // component set to a different smooth function: for every owned and ghost
-// cell, vertex and component, the entry's value and value_at() must equal
-// the vector read at vertex_dof_index(v, c) (exactly: it is the same
-// entry), and the entry's global index must be vertex_dof_index(v, c).
+// cell, vertex and component, the entry's value, value_at() and entry_at()
+// of a copy (copy_to()) must equal the vector read at vertex_dof_index(v, c)
+// (exactly: it is the same entry), and the entry's global index must be
+// vertex_dof_index(v, c).
 // Checked again after a mesh change (every cell with x < 0 refined, then
 // setup_dofs()). 1 and 2 ranks print the same.
 
@@ -39,6 +40,8 @@ namespace
       for (unsigned int c = 0; c < fields.n_components; ++c)
         fields.set_value(node, c, field.value(node.point, c));
     fields.finalize();
+    typename vefs::TransportedFields<dim>::VectorType copy;
+    fields.copy_to(copy);
 
     unsigned int wrong_values = 0, wrong_indices = 0, ghost_cells = 0,
                  owned_cells = 0;
@@ -53,7 +56,8 @@ namespace
                 const double value =
                   fields.vector()(cell->vertex_dof_index(v, c));
                 if (fields.local_value(entries[v] + c) != value ||
-                    fields.value_at(cell, v, c) != value)
+                    fields.value_at(cell, v, c) != value ||
+                    fields.entry_at(copy, cell, v, c) != value)
                   ++wrong_values;
                 if (fields.partitioner->local_to_global(entries[v] + c) !=
                     cell->vertex_dof_index(v, c))

@@ -297,6 +297,36 @@ namespace vefs
     }
 
     /**
+     * Component @p c at vertex @p v of an owned or ghost @p cell in
+     * @p vector, which initialize_vector() or copy_to() made: the entry
+     * local_entry() names (for active cells read from the table, not found
+     * through deal.II's accessors).
+     */
+    template <typename CellIterator>
+    double &
+    entry_at(VectorType         &vector,
+             const CellIterator &cell,
+             const unsigned int  v,
+             const unsigned int  c) const
+    {
+      Assert(vector.get_partitioner() == partitioner,
+             ExcMessage("A vector of another layout."));
+      return vector.local_element(local_entry(cell, v, c));
+    }
+
+    template <typename CellIterator>
+    double
+    entry_at(const VectorType   &vector,
+             const CellIterator &cell,
+             const unsigned int  v,
+             const unsigned int  c) const
+    {
+      Assert(vector.get_partitioner() == partitioner,
+             ExcMessage("A vector of another layout."));
+      return vector.local_element(local_entry(cell, v, c));
+    }
+
+    /**
      * Local indices (owned or ghost, in the numbering of partitioner) of the
      * first component at each vertex of a cell: component c of vertex v is
      * entry first[v] + c, the components of a vertex being numbered in a row.
@@ -344,7 +374,7 @@ namespace vefs
                     const Tensor<1, dim> &u)
     {
       for (unsigned int d = 0; d < dim; ++d)
-        fields(cell->vertex_dof_index(v, d)) = u[d];
+        fields.local_element(local_entry(cell, v, d)) = u[d];
     }
     /** @} */
 
