@@ -302,25 +302,16 @@ namespace vefs
      * local_entry() names (for active cells read from the table, not found
      * through deal.II's accessors).
      */
-    template <typename CellIterator>
-    double &
-    entry_at(VectorType         &vector,
+    template <typename Vector, typename CellIterator>
+    decltype(auto)
+    entry_at(Vector             &vector,
              const CellIterator &cell,
              const unsigned int  v,
              const unsigned int  c) const
     {
-      Assert(vector.get_partitioner() == partitioner,
-             ExcMessage("A vector of another layout."));
-      return vector.local_element(local_entry(cell, v, c));
-    }
-
-    template <typename CellIterator>
-    double
-    entry_at(const VectorType   &vector,
-             const CellIterator &cell,
-             const unsigned int  v,
-             const unsigned int  c) const
-    {
+      // A reference to the entry of a mutable vector, its value otherwise.
+      static_assert(std::is_same_v<std::remove_const_t<Vector>, VectorType>,
+                    "A vector of the fields' type.");
       Assert(vector.get_partitioner() == partitioner,
              ExcMessage("A vector of another layout."));
       return vector.local_element(local_entry(cell, v, c));
