@@ -175,6 +175,9 @@ namespace vefs
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && domain.has_liquid(cell))
         {
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int d = 0; d < dim; ++d)
+              vertex_u[v][d] = fields.entry_at(velocity, cell, v, d);
           if (domain.location(cell) == LiquidDomain<dim>::Location::cut)
             {
               // A cut cell carries the stress at all its vertices by the
@@ -187,11 +190,8 @@ namespace vefs
               // stretching, and grows by the strain bound in every step
               // (the beam held by a no-slip wall, doc/oscillating_beam.md).
               const BoxCellValues<dim> &values = liquid_values.reinit(cell);
-              for (const unsigned int v : cell->vertex_indices())
-                for (unsigned int d = 0; d < dim; ++d)
-                  vertex_u[v][d] = fields.entry_at(velocity, cell, v, d);
-              Tensor<2, dim> mean;
-              double         volume = 0;
+              Tensor<2, dim>            mean;
+              double                    volume = 0;
               for (unsigned int q = 0; q < values.size(); ++q)
                 {
                   for (const unsigned int v : cell->vertex_indices())
@@ -212,8 +212,8 @@ namespace vefs
                   grad_u[v] = 0;
                   for (const unsigned int w : cell->vertex_indices())
                     for (unsigned int d = 0; d < dim; ++d)
-                      grad_u[v][d] += fields.entry_at(velocity, cell, w, d) *
-                                      vertex_values.gradient[v][w];
+                      grad_u[v][d] +=
+                        vertex_u[w][d] * vertex_values.gradient[v][w];
                 }
             }
           for (const unsigned int v : cell->vertex_indices())

@@ -238,7 +238,7 @@ namespace vefs
     {
       Tensor<1, dim> u;
       for (unsigned int d = 0; d < dim; ++d)
-        u[d] = fields.local_element(local_entry(cell, v, d));
+        u[d] = entry_at(fields, cell, v, d);
       return u;
     }
 
@@ -246,7 +246,7 @@ namespace vefs
     double
     level_set_at(const CellIterator &cell, const unsigned int v) const
     {
-      return fields.local_element(local_entry(cell, v, level_set_component));
+      return entry_at(fields, cell, v, level_set_component);
     }
 
     /** Only if has_stress(). */
@@ -256,8 +256,8 @@ namespace vefs
     {
       SymmetricTensor<2, dim> sigma;
       for (unsigned int i = 0; i < n_stress_components; ++i)
-        sigma.access_raw_entry(i) = fields.local_element(
-          local_entry(cell, v, first_stress_component + i));
+        sigma.access_raw_entry(i) =
+          entry_at(fields, cell, v, first_stress_component + i);
       return sigma;
     }
 
@@ -270,8 +270,8 @@ namespace vefs
     {
       Tensor<1, dim> q;
       for (unsigned int d = 0; d < dim; ++d)
-        q[d] = fields.local_element(
-          local_entry(cell, v, first_dumbbell_component + dim * i + d));
+        q[d] =
+          entry_at(fields, cell, v, first_dumbbell_component + dim * i + d);
       return q;
     }
 
@@ -282,8 +282,7 @@ namespace vefs
     {
       Tensor<1, dim> a;
       for (unsigned int d = 0; d < dim; ++d)
-        a[d] = fields.local_element(
-          local_entry(cell, v, first_acceleration_component + d));
+        a[d] = entry_at(fields, cell, v, first_acceleration_component + d);
       return a;
     }
 
@@ -293,7 +292,7 @@ namespace vefs
              const unsigned int  v,
              const unsigned int  c) const
     {
-      return fields.local_element(local_entry(cell, v, c));
+      return entry_at(fields, cell, v, c);
     }
 
     /**
@@ -365,7 +364,7 @@ namespace vefs
                     const Tensor<1, dim> &u)
     {
       for (unsigned int d = 0; d < dim; ++d)
-        fields.local_element(local_entry(cell, v, d)) = u[d];
+        entry_at(fields, cell, v, d) = u[d];
     }
     /** @} */
 
