@@ -11,9 +11,11 @@ Usage (from anywhere):
       [--set 'Solver/Ghost penalty=0.02' ...]
 
 The material, scheme and numerics are the scene's (G = 2000 Pa; the
-velocity at the feet by cubic interpolation, PSPG 0.05 and the extended
-velocity at the outside vertices of cut cells, as 'automatic' gives them
-under gravity); gravity is off and the floor is a slip wall.
+velocity at the feet by cubic interpolation, PSPG 0.01 and the extended
+velocity at the outside vertices of cut cells on walls, as 'automatic'
+gives them under gravity; --set 'Solver/Pressure stabilization=0.05'
+--set 'Flow/Outside velocity of cut cells=extension' gives the former ones);
+gravity is off and the floor is a slip wall.
 At t = 0 the velocity is u = (x, -y) 1/s, divergence free and tangent to
 the floor y = 0, and the body vibrates freely (about 3 periods in 0.6 s).
 The material keeps its energy, so every loss is the scheme's:
@@ -65,8 +67,8 @@ def make_prm(text, shape, level, output_dir, settings):
             (["Initial liquid"], "Ball center", centre),
             (["Initial liquid"], "Velocity", "x; -y"),
             (["Transport"], "Velocity interpolation", "cubic"),
-            (["Solver"], "Pressure stabilization", "0.05"),
-            (["Flow"], "Outside velocity of cut cells", "extension"),
+            (["Solver"], "Pressure stabilization", "0.01"),
+            (["Flow"], "Outside velocity of cut cells", "extension at walls"),
             (["Mesh refinement"], "Maximum level", str(level)),
             (["Mesh refinement"], "Bulk level", str(level - 1)),
             (["Time"], "End time", "0.6"),

@@ -71,19 +71,23 @@ namespace vefs
         "solution's normal velocity at zero beside liquid that moves: the 2D "
         "stiff ball's first contact removes 24.7 / 14.7 / 8.0 % of its impact "
         "energy with solution / extension / extension at walls (3.1 mm "
-        "cells). Extension everywhere makes a ball vibrating freely gain "
-        "energy on coarse cells (48.8 / 7.5 / 0.2 % in 0.6 s on 6.25 / 3.1 / "
-        "1.6 mm cells); extension at walls gives the liquid beside the "
-        "contact line momentum that no force accounts for (up to 3.05 % of "
-        "the largest step impulse in a step, tests/bouncing_ball_2d_stiff.py "
-        "allows 3 %). Where a free surface meets a no-slip wall, only the "
-        "ghost penalty and a sliver of liquid set the solution: the 3D beam "
-        "of prm/oscillating_beam.prm stalls at t = 0.17 s with solution and "
+        "cells, PSPG c = 0.05; 13.6 / 5.9 % with extension / extension at "
+        "walls and c = 0.01). Extension everywhere makes a ball vibrating "
+        "freely gain energy on coarse cells (48.8 / 7.5 / 0.2 % in 0.6 s on "
+        "6.25 / 3.1 / 1.6 mm cells); extension at walls gives the liquid "
+        "beside the contact line momentum that no force accounts for (in a "
+        "step of the stiff ball's contact at most 5.2 / 2.7 / 1.5 % of the "
+        "largest step impulse on 6.25 / 3.1 / 1.6 mm cells with c = 0.01; "
+        "tests/bouncing_ball_2d_stiff.py allows 3 % at 3.1 mm). Where a "
+        "free surface meets a no-slip wall, only the ghost penalty and a "
+        "sliver of liquid set the solution: the 3D beam of "
+        "prm/oscillating_beam.prm stalls at t = 0.17 s with solution and "
         "runs with extension. doc/bouncing_ball.md, doc/oscillating_beam.md. "
-        "automatic: extension for an elastic solid that holds its shape "
-        "under its weight (the rule of 'Solver/Pressure stabilization'; the "
-        "soft 2D ball of prm/bouncing_ball_2d.prm loses 28.8 J/m with it "
-        "against 24.4 by t = 1.35 s), solution otherwise. The stress at "
+        "automatic: extension at walls for an elastic solid that holds its "
+        "shape under its weight (the rule of 'Solver/Pressure "
+        "stabilization'; the soft 2D ball of prm/bouncing_ball_2d.prm loses "
+        "28.8 J/m with extension against 24.4 by t = 1.35 s), solution "
+        "otherwise. The stress at "
         "these vertices: 'Outside stress of cut cells'.");
       add_selection(
         prm,
@@ -118,8 +122,9 @@ namespace vefs
                           const bool   stiff_solid_under_gravity)
   {
     if (outside_velocity == OutsideVelocity::automatic)
-      outside_velocity = stiff_solid_under_gravity ? OutsideVelocity::extension
-                                                   : OutsideVelocity::solution;
+      outside_velocity = stiff_solid_under_gravity
+                           ? OutsideVelocity::extension_at_walls
+                           : OutsideVelocity::solution;
     if (outside_stress == OutsideStress::automatic)
       outside_stress = regime == Regime::elastic_solid || dumbbells
                          ? OutsideStress::extension
@@ -170,14 +175,16 @@ namespace vefs
         0,
         "Factor c of the PSPG parameter of the Q1-Q1 element, tau_K = c / "
         "(rho/tau + 4 mu / h_K^2). Its consistency error grows with c where "
-        "the pressure gradient is large: the stiff ball's lift-off and "
-        "rebound only settled under refinement with 0.05, and a stiff beam "
-        "at rest creeps with 0.25 (its mean sag at 6.25 mm 0.371 mm, "
-        "growing, against 0.325 mm with 0.05 and Timoshenko's 0.315 mm). "
-        "Smaller c costs Krylov iterations (10-20 % at 0.02-0.01) and, in "
-        "soft solids, steps (doc/bouncing_ball.md). automatic: 0.05 for an "
-        "elastic solid (alpha = 0, macroscopic stress, second-order scheme) "
-        "that holds its shape under its weight, rho |g| L / (3 G) in (0, 1) "
+        "the pressure gradient is large: a stiff beam at rest creeps with "
+        "0.25 (its mean sag at 6.25 mm 0.371 mm, growing, against 0.325 / "
+        "0.316 mm with 0.05 / 0.01 and Timoshenko's 0.315 mm), and the stiff "
+        "ball's first contact loses 8.0 % of its impact energy with 0.05, "
+        "5.9 % with 0.01 (3.1 mm cells, 'Flow/Outside velocity of cut "
+        "cells = extension at walls'). Smaller c costs Krylov iterations "
+        "(10-20 % at 0.02-0.01; the stiff ball: 60 a step with 0.01, 46 with "
+        "0.05) and, in soft solids, steps (doc/bouncing_ball.md). automatic: 0.01 for an elastic solid (alpha "
+        "= 0, macroscopic stress, second-order scheme) that holds its shape "
+        "under its weight, rho |g| L / (3 G) in (0, 1) "
         "with L the cavity's largest extent; 0.25 otherwise.");
       prm.add_parameter(
         "Free surface stabilization",
@@ -220,7 +227,7 @@ namespace vefs
   SolverParameters::resolve(const bool stiff_solid_under_gravity)
   {
     if (automatic_pressure_stabilization)
-      pressure_stabilization = stiff_solid_under_gravity ? 0.05 : 0.25;
+      pressure_stabilization = stiff_solid_under_gravity ? 0.01 : 0.25;
   }
 
   void

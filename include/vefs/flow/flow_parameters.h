@@ -41,10 +41,11 @@ namespace vefs
      * 'automatic' outside stress becomes extension for an elastic solid
      * (the updated one feeds energy into a body at rest:
      * doc/oscillating_beam.md) and updated, the seed's, for a liquid;
-     * 'automatic' outside velocity: extension for an elastic solid that
-     * holds its shape under its weight (the solution on the wall beside
-     * its contact line costs a bouncing body energy: doc/bouncing_ball.md),
-     * the solution otherwise.
+     * 'automatic' outside velocity: extension at walls for an elastic solid
+     * that holds its shape under its weight (the solution on the wall beside
+     * its contact line costs a bouncing body energy, and the extension at
+     * every outside vertex makes a body vibrating freely gain energy on
+     * coarse cells: doc/bouncing_ball.md), the solution otherwise.
      */
     void
     resolve(const Regime regime,
@@ -99,9 +100,10 @@ namespace vefs
     check() const;
 
     /**
-     * 'automatic' pressure stabilization: 0.05 for an elastic solid that
+     * 'automatic' pressure stabilization: 0.01 for an elastic solid that
      * holds its shape under its weight (0.25 lets it creep:
-     * doc/oscillating_beam.md, "A stiff beam at rest"), 0.25 otherwise.
+     * doc/oscillating_beam.md, "A stiff beam at rest"; 0.05 costs a
+     * bouncing body more energy: doc/bouncing_ball.md), 0.25 otherwise.
      */
     void
     resolve(const bool stiff_solid_under_gravity);
