@@ -182,10 +182,11 @@ namespace vefs
         "5.9 % with 0.01 (3.1 mm cells, 'Flow/Outside velocity of cut "
         "cells = extension at walls'). Smaller c costs Krylov iterations "
         "(10-20 % at 0.02-0.01; the stiff ball: 60 a step with 0.01, 46 with "
-        "0.05) and, in soft solids, steps (doc/bouncing_ball.md). automatic: 0.01 for an elastic solid (alpha "
-        "= 0, macroscopic stress, second-order scheme) that holds its shape "
-        "under its weight, rho |g| L / (3 G) in (0, 1) "
-        "with L the cavity's largest extent; 0.25 otherwise.");
+        "0.05) and, in soft solids, steps (doc/bouncing_ball.md). "
+        "automatic: 0.01 for an elastic solid (alpha = 0, macroscopic "
+        "stress, second-order scheme) that holds its shape under its weight, "
+        "rho |g| L / (3 G) in (0, 1) with L the cavity's largest extent; "
+        "0.25 otherwise.");
       prm.add_parameter(
         "Free surface stabilization",
         free_surface_stabilization,
