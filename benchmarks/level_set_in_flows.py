@@ -1,14 +1,14 @@
 #!/usr/bin/env python3
 """The level set's interpolation at the feet in the 2D flow scenes: each
-flow test scene run with two values of 'Transport/Level set interpolation'
-(linear and gradient augmented unless --pair says otherwise), the two runs
+flow test scene run with both values of 'Transport/Level set interpolation'
+(linear and gradient augmented), the two runs
 side by side (two processes of one rank each, so that their wall times are
 taken at the same load), and each run checked by the test's own checker
 (tests/<scene>.py).
 
 Usage (from anywhere):
   /usr/bin/python3 benchmarks/level_set_in_flows.py [--vefs build/vefs]
-      [--scenes broken_dam_2d drop_into_pool_2d ...] [--pair linear cubic]
+      [--scenes broken_dam_2d drop_into_pool_2d ...]
       [--results-dir benchmarks/results/level_set_in_flows]
       [--output benchmarks/results/level_set_in_flows.md] [--no-run]
 
@@ -91,22 +91,19 @@ def main():
     add_study_arguments(parser, "level_set_in_flows",
                         "level_set_in_flows.md")
     parser.add_argument("--scenes", nargs="+", default=SCENES)
-    parser.add_argument("--pair", nargs=2, default=PAIR,
-                        metavar=("FIRST", "SECOND"),
-                        help="the two interpolations compared")
     args = parser.parse_args()
     os.makedirs(args.results_dir, exist_ok=True)
     if not args.no_run:
         for scene in args.scenes:
-            run_pair(args.vefs, args.results_dir, scene, args.pair, args.set)
+            run_pair(args.vefs, args.results_dir, scene, PAIR, args.set)
             print(scene, "done", flush=True)
-    first, second = args.pair
+    first, second = PAIR
     lines = ["# The level set interpolation in the 2D flow tests", "",
              "%s / %s, run side by side on one rank each (%s)." % (
                  first, second, args.vefs), ""]
     for scene in args.scenes:
         (wall_l, cpu_l, code_l, out_l), (wall_g, cpu_g, code_g, out_g) = [
-            checked(args.results_dir, scene, i) for i in args.pair]
+            checked(args.results_dir, scene, i) for i in PAIR]
         lines.append("## %s: wall time %.1f / %.1f s, CPU time %.1f / %.1f s "
                      "(ratio %.2f)%s" % (
             scene, wall_l, wall_g, cpu_l, cpu_g, cpu_g / cpu_l,

@@ -72,16 +72,16 @@ namespace vefs
     template <int dim>
     struct Interpolation
     {
-      /** The level set by this Hermite interpolation, if not null. */
+      /**
+       * The level set by this gradient-augmented Hermite interpolation, if
+       * not null, and its gradient as extras.
+       */
       const FieldHermite<dim> *hermite = nullptr;
-      bool                     limited = false;
       /**
        * If not null, the level set's Hermite cubic is also limited in the
        * cells at these contact walls.
        */
       const BoxMeshLocator<dim> *limited_at_contact_walls = nullptr;
-      /** Extras: the gradient of the (Hermite) level set. */
-      bool level_set_gradient = false;
       /**
        * Extras: the velocity gradient, Q1 from these nodal gradients (see
        * recover_nodal_gradients()), if not null.
@@ -200,13 +200,11 @@ namespace vefs
             dof_cell,
             entries,
             xi,
-            how.limited ||
-              (how.limited_at_contact_walls &&
-               how.limited_at_contact_walls->touches_contact_wall(cell)),
-            how.level_set_gradient ? &gradient : nullptr);
-          if (how.level_set_gradient)
-            for (unsigned int d = 0; d < dim; ++d)
-              values.extra(d) = gradient[d];
+            how.limited_at_contact_walls &&
+              how.limited_at_contact_walls->touches_contact_wall(cell),
+            &gradient);
+          for (unsigned int d = 0; d < dim; ++d)
+            values.extra(d) = gradient[d];
         }
       return values;
     }
@@ -396,15 +394,11 @@ namespace vefs
                             FieldHermite<dim>            &hermite)
     {
       Interpolation<dim> how;
-      if (interpolation == LevelSetInterpolation::linear)
-        return how;
-      const bool gradient_augmented =
-        interpolation == LevelSetInterpolation::gradient_augmented;
-      hermite.recover(fields,
-                      gradient_augmented ? &level_set_gradient : nullptr);
-      how.hermite = &hermite;
-      how.limited = interpolation == LevelSetInterpolation::limited_cubic;
-      how.level_set_gradient = gradient_augmented;
+      if (interpolation == LevelSetInterpolation::gradient_augmented)
+        {
+          hermite.recover(fields, &level_set_gradient);
+          how.hermite = &hermite;
+        }
       return how;
     }
 

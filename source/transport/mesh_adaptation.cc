@@ -289,7 +289,7 @@ namespace vefs
     }
 
     /**
-     * The cubic level set at the new vertices of refined cells.
+     * The gradient-augmented level set at the new vertices of refined cells.
      * VertexFieldTransfer interpolates the Q1 field there, and where psi is
      * convex (across a thin filament, between two surfaces) that raises it:
      * the liquid shrinks by O(h^2) at each refinement (vortex, h = 1/128,
@@ -304,16 +304,10 @@ namespace vefs
     {
     public:
       HermiteRefinement(const TransportedFields<dim> &fields,
-                        const LevelSetGradient<dim>  &level_set_gradient,
-                        const LevelSetInterpolation   interpolation)
+                        const LevelSetGradient<dim>  &level_set_gradient)
         : fields(fields)
-        , limited(interpolation == LevelSetInterpolation::limited_cubic)
       {
-        hermite.recover(fields,
-                        interpolation ==
-                            LevelSetInterpolation::gradient_augmented
-                          ? &level_set_gradient
-                          : nullptr);
+        hermite.recover(fields, &level_set_gradient);
       }
 
       std::vector<std::pair<unsigned int, unsigned int>>
@@ -344,7 +338,7 @@ namespace vefs
                             dof_cell,
                             entries,
                             FamilyLattice<dim>::unit_point(i),
-                            limited,
+                            false,
                             &gradient);
             for (unsigned int d = 0; d < dim; ++d)
               values[(dim + 1) * i + 1 + d] = gradient[d];
@@ -354,7 +348,6 @@ namespace vefs
 
     private:
       const TransportedFields<dim> &fields;
-      const bool                    limited;
       FieldHermite<dim>             hermite;
     };
   } // namespace
@@ -423,8 +416,9 @@ namespace vefs
       return false;
 
     // The level set gradient has dim used slots, the predicted surface
-    // one. Only the cubic interpolations read the gradient: with the
-    // linear one it is not carried (a fifth of the data sent in 3D).
+    // one. Only the gradient-augmented interpolation reads the gradient:
+    // with the linear one it is not carried (a fifth of the data sent in
+    // 3D).
     using Transfer = VertexFieldTransfer<dim>;
     const bool with_gradient =
       level_set_gradient && interpolation != LevelSetInterpolation::linear;
@@ -438,16 +432,14 @@ namespace vefs
       slots.push_back({&level_set_gradient->vector(), gradient});
     if (surface_ahead)
       slots.push_back({surface_ahead, {c}});
-    // Refined cells take the cubic level set, or the detail they kept
-    // (the one-change band refuses the cubic interpolations).
+    // Refined cells take the gradient-augmented level set, or the detail
+    // they kept (the one-change band refuses it).
     std::unique_ptr<HermiteRefinement<dim>> hermite_refinement;
     typename Transfer::LatticeSource       *lattice_source = nullptr;
     if (with_gradient)
       {
         hermite_refinement =
-          std::make_unique<HermiteRefinement<dim>>(fields,
-                                                   *level_set_gradient,
-                                                   interpolation);
+          std::make_unique<HermiteRefinement<dim>>(fields, *level_set_gradient);
         lattice_source = hermite_refinement.get();
       }
     if (coarsened_detail && present_band != PresentBand::kept)

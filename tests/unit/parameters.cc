@@ -596,11 +596,12 @@ main()
         << placement(local, linear, "") << '\n';
     out << "the same, target CFL 5: "
         << placement(local + "  set Target CFL = 5\n", linear, "") << '\n';
-    for (const std::string feet : {"Level set interpolation = cubic",
-                                   "Level set interpolation = automatic",
-                                   "Velocity interpolation = limited cubic",
-                                   "Stress interpolation = limited cubic",
-                                   "Remap distance = 3"})
+    for (const std::string feet :
+         {"Level set interpolation = gradient augmented",
+          "Level set interpolation = automatic",
+          "Velocity interpolation = limited cubic",
+          "Stress interpolation = limited cubic",
+          "Remap distance = 3"})
       out << "the same, " << feet << ": "
           << placement(local,
                        feet.find("Level set") == 0

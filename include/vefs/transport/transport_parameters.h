@@ -13,8 +13,6 @@ namespace vefs
     /** By the dimension: TransportParameters::resolve_level_set(). */
     automatic,
     linear,
-    cubic,
-    limited_cubic,
     gradient_augmented
   };
 
