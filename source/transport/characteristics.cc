@@ -383,7 +383,7 @@ namespace vefs
 
     /**
      * How the level set is interpolated at the feet as @p interpolation
-     * says: the Hermite modes recover their nodal derivatives into
+     * says: the gradient-augmented one recovers its Hermite data into
      * @p hermite, which must outlive the result.
      */
     template <int dim>

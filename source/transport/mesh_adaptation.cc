@@ -421,7 +421,8 @@ namespace vefs
     // 3D).
     using Transfer = VertexFieldTransfer<dim>;
     const bool with_gradient =
-      level_set_gradient && interpolation != LevelSetInterpolation::linear;
+      level_set_gradient &&
+      interpolation == LevelSetInterpolation::gradient_augmented;
     std::vector<unsigned int> all_fields(fields.n_components);
     std::iota(all_fields.begin(), all_fields.end(), 0);
     std::vector<unsigned int> gradient(dim);
