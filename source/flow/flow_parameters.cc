@@ -72,13 +72,11 @@ namespace vefs
         "stiff ball's first contact removes 24.7 / 14.7 / 8.0 % of its impact "
         "energy with solution / extension / extension at walls (3.1 mm "
         "cells, PSPG c = 0.05; 13.6 / 5.9 % with extension / extension at "
-        "walls and c = 0.01; the weight 0.51 of the new forces in all these; "
-        "4.9 % with extension at walls, c = 0.01 and the trapezoidal 1/2). "
-        "Extension everywhere makes a ball vibrating "
+        "walls and c = 0.01). Extension everywhere makes a ball vibrating "
         "freely gain energy on coarse cells (48.8 / 7.5 / 0.2 % in 0.6 s on "
         "6.25 / 3.1 / 1.6 mm cells); extension at walls gives the liquid "
         "beside the contact line momentum that no force accounts for (in a "
-        "step of the stiff ball's contact at most 5.3 / 2.8 / 1.6 % of the "
+        "step of the stiff ball's contact at most 5.2 / 2.7 / 1.5 % of the "
         "largest step impulse on 6.25 / 3.1 / 1.6 mm cells with c = 0.01; "
         "tests/bouncing_ball_2d_stiff.py allows 3 % at 3.1 mm). Where a "
         "free surface meets a no-slip wall, only the ghost penalty and a "
@@ -88,9 +86,9 @@ namespace vefs
         "automatic: extension at walls for an elastic solid that holds its "
         "shape under its weight (the rule of 'Solver/Pressure "
         "stabilization'; the soft 2D ball of prm/bouncing_ball_2d.prm loses "
-        "28.8 J/m with extension against 24.4 by t = 1.35 s, w = 0.51), "
-        "solution otherwise. The stress at these vertices: 'Outside stress "
-        "of cut cells'.");
+        "28.8 J/m with extension against 24.4 by t = 1.35 s), solution "
+        "otherwise. The stress at "
+        "these vertices: 'Outside stress of cut cells'.");
       add_selection(
         prm,
         "Outside stress of cut cells",
@@ -182,11 +180,9 @@ namespace vefs
         "0.316 mm with 0.05 / 0.01 and Timoshenko's 0.315 mm), and the stiff "
         "ball's first contact loses 8.0 % of its impact energy with 0.05, "
         "5.9 % with 0.01 (3.1 mm cells, 'Flow/Outside velocity of cut "
-        "cells = extension at walls', the weight 0.51 of the new forces; "
-        "4.9 % with 0.01 and the trapezoidal 1/2). Smaller c costs Krylov "
-        "iterations (10-20 % at 0.02-0.01; the stiff ball: 60 a step with "
-        "0.01, 46 with 0.05) and, in soft solids, steps "
-        "(doc/bouncing_ball.md). "
+        "cells = extension at walls'). Smaller c costs Krylov iterations "
+        "(10-20 % at 0.02-0.01; the stiff ball: 60 a step with 0.01, 46 with "
+        "0.05) and, in soft solids, steps (doc/bouncing_ball.md). "
         "automatic: 0.01 for an elastic solid (alpha = 0, macroscopic "
         "stress, second-order scheme) that holds its shape under its weight, "
         "rho |g| L / (3 G) in (0, 1) with L the cavity's largest extent; "

@@ -483,9 +483,8 @@ namespace vefs
     // tau (w F^{n+1} + (1 - w) F^n): the walls' impulse over the step is
     // tau times the mean of their reactions at its ends, weighted as the
     // forces are. The reaction itself alternates from step to step where
-    // the contact set changes (the trapezoidal rule does not damp its
-    // alternating part; the motion stays smooth: doc/time_step_flow.md); the
-    // mean does not.
+    // the contact set changes (w = 0.51 damps its alternating part slowly;
+    // the motion stays smooth: doc/time_step_flow.md); the mean does not.
     const double w           = parameters.new_force_weight();
     const double reaction    = flow.contact_force();
     const double previous    = statistics.step == 1 ? initial_contact_reaction
