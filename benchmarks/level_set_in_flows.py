@@ -1,10 +1,9 @@
 #!/usr/bin/env python3
 """The level set's interpolation at the feet in the 2D flow scenes: each
 flow test scene run with both values of 'Transport/Level set interpolation'
-(linear and gradient augmented), the two runs
-side by side (two processes of one rank each, so that their wall times are
-taken at the same load), and each run checked by the test's own checker
-(tests/<scene>.py).
+(linear and gradient augmented), the two runs side by side (two processes
+of one rank each, so that their wall times are taken at the same load), and
+each run checked by the test's own checker (tests/<scene>.py).
 
 Usage (from anywhere):
   /usr/bin/python3 benchmarks/level_set_in_flows.py [--vefs build/vefs]

@@ -330,6 +330,10 @@ namespace vefs
         std::vector<double> values((dim + 1) * FamilyLattice<dim>::n_points);
         const auto          dof_cell = fields.cell_of(cell);
         const auto          entries  = fields.vertex_entries(dof_cell);
+        // The new vertices take the cubic itself: clipping it to the
+        // parent's nodal range would cut the filaments the carried gradient
+        // keeps.
+        constexpr bool limited = false;
         for (unsigned int i = 0; i < FamilyLattice<dim>::n_points; ++i)
           {
             Tensor<1, dim> gradient;
@@ -338,7 +342,7 @@ namespace vefs
                             dof_cell,
                             entries,
                             FamilyLattice<dim>::unit_point(i),
-                            false,
+                            limited,
                             &gradient);
             for (unsigned int d = 0; d < dim; ++d)
               values[(dim + 1) * i + 1 + d] = gradient[d];
