@@ -184,7 +184,7 @@ namespace vefs
     const typename TransportedFields<dim>::VectorType &known,
     const double                                       tau) const
   {
-    const double w = parameters.new_force_weight();
+    const double w = parameters.new_force_weight;
     for (const auto &node : fields.nodes())
       if (known(node.dofs[0]) != 0)
         fields.set_acceleration(
@@ -285,7 +285,7 @@ namespace vefs
         // The fields still hold u*, the solution u.
         TimerOutput::Scope scope(timer, "energy budget");
         statistics.energy_change_contact = time.tau() *
-                                           parameters.new_force_weight() *
+                                           parameters.new_force_weight *
                                            flow.contact_power(fields);
       }
     update_fields(fields,
@@ -485,7 +485,7 @@ namespace vefs
     // forces are. The reaction itself alternates from step to step where
     // the contact set changes (w = 0.51 damps its alternating part slowly;
     // the motion stays smooth: doc/time_step_flow.md); the mean does not.
-    const double w           = parameters.new_force_weight();
+    const double w           = parameters.new_force_weight;
     const double reaction    = flow.contact_force();
     const double previous    = statistics.step == 1 ? initial_contact_reaction
                                                     : statistics.contact_reaction;

@@ -20,8 +20,8 @@ namespace unit_test
 
     /**
      * The first-order step of length @p tau with finest cells of level
-     * @p max_level, no strain bound, no energy budget; it refers to the
-     * members above.
+     * @p max_level, no strain bound, no energy budget (new force weight 1); it
+     * refers to the members above.
      */
     vefs::FlowStepParameters
     step(const unsigned int max_level, const double tau) const
@@ -34,7 +34,7 @@ namespace unit_test
               max_level,
               0.,
               false,
-              false,
+              1.,
               tau};
     }
   };

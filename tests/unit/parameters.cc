@@ -10,13 +10,14 @@
 //  - Every moved entry set at its old place lands in its new member, with
 //    one warning naming both places; old and new place together are refused.
 //  - 'automatic' entries resolve by the material's regime or, for the
-//    stress interpolation, by the velocity interpolation; the level set
-//    interpolation by the dimension, a prescribed velocity and the band
-//    placement; the velocity interpolation by the regime and the band
-//    placement; the remap distance by the level set interpolation, a
-//    prescribed velocity and the band placement; the band width and miss
-//    tolerance by the band placement; the band placement by the strain
-//    bound, the target CFL and the interpolation at the feet.
+//    stress interpolation, by the velocity interpolation; the new force
+//    weight by the time scheme; the level set interpolation by the
+//    dimension, a prescribed velocity and the band placement; the velocity
+//    interpolation by the regime and the band placement; the remap distance by
+//    the level set interpolation, a prescribed velocity and the band placement;
+//    the band width and miss tolerance by the band placement; the band
+//    placement by the strain bound, the target CFL and the interpolation at the
+//    feet.
 
 #include "unit_test.h"
 
@@ -262,6 +263,52 @@ main()
       {
         out << "strain bound -1: " << error.what() << '\n';
       }
+  }
+
+  {
+    // 'Time/New force weight = automatic': 0.51 for the second-order scheme
+    // (a material with a stress), 1 for the first-order one. A number stays
+    // with the second-order scheme; it is refused with the first-order one
+    // and outside [0.5, 1].
+    const auto weight = [](const std::string &material,
+                           const std::string &time) {
+      write("weight.prm",
+            "subsection Material\n" + material + "end\nsubsection Time\n" +
+              time + "end\n");
+      try
+        {
+          vefs::Parameters parameters;
+          ParameterHandler prm;
+          parameters.declare(prm);
+          vefs::read_parameter_file(prm,
+                                    "weight.prm",
+                                    vefs::Parameters::moved_entries);
+          parameters.check();
+          std::ostringstream text;
+          text << parameters.flow_step().new_force_weight;
+          return text.str();
+        }
+      catch (const vefs::InputError &error)
+        {
+          return std::string(error.what());
+        }
+    };
+    const std::string elastic = "  set Alpha = 0\n"
+                                "  set Polymer viscosity = 10\n"
+                                "  set Relaxation time = 0.005\n";
+    out << "new force weight automatic, elastic solid: " << weight(elastic, "")
+        << '\n';
+    out << "the same, first-order scheme: "
+        << weight(elastic, "  set Scheme = first order\n") << '\n';
+    out << "the same, Newtonian liquid: "
+        << weight("  set Density = 1000\n", "") << '\n';
+    for (const std::string value : {"0.5", "1", "0.4", "1.5"})
+      out << "new force weight " << value << ", elastic solid: "
+          << weight(elastic, "  set New force weight = " + value + "\n")
+          << '\n';
+    out << "new force weight 0.5, Newtonian liquid: "
+        << weight("  set Density = 1000\n", "  set New force weight = 0.5\n")
+        << '\n';
   }
 
   {

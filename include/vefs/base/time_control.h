@@ -51,11 +51,19 @@ namespace vefs
     bool second_order = false;
     /** The entry; resolve_scheme() sets second_order from it. */
     TimeScheme scheme = TimeScheme::automatic;
+    /**
+     * 'New force weight': w of the second-order scheme's momentum equation,
+     * 1 for the first-order scheme; set by resolve_scheme() while
+     * @p automatic_new_force_weight.
+     */
+    double new_force_weight           = 0.51;
+    bool   automatic_new_force_weight = true;
 
     /**
      * 'automatic' becomes second order for a material with a stress
      * (@p has_stress) unless @p stress_theta is below 1, first order
-     * otherwise.
+     * otherwise; the new forces' weight follows the scheme. Throws InputError
+     * for a weight given to the first-order scheme.
      */
     void
     resolve_scheme(const bool has_stress, const double stress_theta);

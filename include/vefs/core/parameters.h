@@ -75,7 +75,7 @@ namespace vefs
               mesh.max_level,
               time.max_strain_per_step,
               postprocess.energy_budget,
-              time.second_order,
+              time.new_force_weight,
               time.time_step};
     }
 

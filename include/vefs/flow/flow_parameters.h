@@ -143,29 +143,22 @@ namespace vefs
     double max_strain_per_step;
     /** 'Postprocess/Energy budget': the energy changes of each stage. */
     bool energy_budget;
-    /** 'Time/Scheme = second order'. */
-    bool second_order;
-
     /**
      * The weight w of the new forces in the momentum equation, (rho / (w
      * tau)) (u - u*) = F^{n+1} + ((1 - w) / w) rho a*: 1 for the first-order
-     * scheme; 0.51 for the second-order one, not the trapezoidal 1/2, which
-     * leaves the alternating part of a constraint force undamped: the 2D
-     * stiff ball's contact force alternated by 47 % of itself from step to
-     * step, 3 % with 0.51 (energy lost in the contact 26.0 % and 25.8 % of
-     * the kinetic energy at impact; doc/time_step_flow.md).
+     * scheme, 'Time/New force weight' for the second-order one (0.51 by
+     * default, not the trapezoidal 1/2, which leaves the alternating part of
+     * a constraint force undamped: the 2D stiff ball's contact force
+     * alternated by 47 % of itself from step to step, 3 % with 0.51;
+     * doc/time_step_flow.md).
      */
-    double
-    new_force_weight() const
-    {
-      return second_order ? 0.51 : 1.;
-    }
+    double new_force_weight;
 
     /** The step w tau of the mass term (and of the stabilisations). */
     double
     mass_step(const double tau) const
     {
-      return new_force_weight() * tau;
+      return new_force_weight * tau;
     }
 
     /**
@@ -175,7 +168,7 @@ namespace vefs
     double
     old_force_step(const double tau) const
     {
-      return (1 - new_force_weight()) * tau;
+      return (1 - new_force_weight) * tau;
     }
     /** 'Time/Time step': the scale of the step that finds the acceleration
      * of a new run with the second-order scheme. */

@@ -106,7 +106,7 @@ namespace vefs
      * The second-order scheme's acceleration at the nodes flagged in
      * @p known: a = ((u - u*) / tau - (1 - w) a*) / w, the new forces over
      * rho (the momentum equation weighs them by w, about 1/2, beside the old
-     * ones, rho a*: FlowStepParameters::new_force_weight()), u the new
+     * ones, rho a*: FlowStepParameters::new_force_weight), u the new
      * velocity in @p fields, u* and a* in @p advected.
      */
     void

@@ -159,7 +159,7 @@ namespace vefs
      * The step of the mass term: w tau, w the weight of the new forces (1,
      * or about 1/2 with the second-order scheme, whose momentum equation
      * (rho / (w tau)) (u - u*) = F^{n+1} + ((1 - w) / w) rho a*:
-     * FlowStepParameters::new_force_weight(); doc/time_step_flow.md).
+     * FlowStepParameters::new_force_weight; doc/time_step_flow.md).
      */
     const double mass_tau;
     /** (1 - w) tau, the step of the old forces rho a* (0: none). */

@@ -1,0 +1,11 @@
+# Issue 49: the standing shear wave at tau = 0.02 and 0.01 on level 4 with
+# the second-order scheme and the trapezoidal weight 1/2 of the new forces;
+# shear_wave_time_order.py checks that the amplitude loss falls as tau^2.
+set -eu
+sed -e 's/Output directory = output/Output directory = half_step/' \
+    -e 's/Time step        = 0.02/Time step        = 0.01/' \
+    shear_wave_time_order.prm > half_step.prm
+for scene in shear_wave_time_order half_step; do
+  ${MPIRUN:-} "$VEFS" $scene.prm > $scene.screen
+done
+/usr/bin/python3 "$TEST_SOURCE_DIR/shear_wave_time_order.py" output half_step
