@@ -10,7 +10,7 @@ Usage (from anywhere; the plot needs matplotlib, i.e. Debian's python3):
       [--end-time T] [--set SECTION/ENTRY=VALUE ...] [--tag TAG]
       [--output benchmarks/results/<scene>_convergence.md] [--plot PNG]
       [--results-dir benchmarks/results] [--t-max 10] [--no-snapshot]
-      [--no-run] [--dry-run]
+      [--time-reference TAU_REF] [--no-run] [--dry-run]
 
 For every pair (level L, time step tau) a copy of the base scene is written
 to <results-dir>/<run>.prm, <run> = <scene>[_<tag>]_conv_L<L>_dt<tau>, with
@@ -46,6 +46,12 @@ scripts/):
   shear-wave (scripts/vefs_tools/shear_wave.py analyse_run): |frequency error|
       |w_sim - w| / w from the zero crossings, and the amplitude loss per
       period from the extrema of the full half periods.
+  time error (with --time-reference TAU_REF, either case): the largest
+      |u_tau(t) - u_ref(t)| of the probe velocity (statistics column
+      probe_u_x) over the rows with 0 < t, u_ref a run at TAU_REF on the
+      same level, interpolated linearly in t: the error of the time
+      stepping alone, whose order the exact solution cannot show once the
+      spatial error dominates.
 The table also gives the number of steps, the largest CFL number of the
 run, the wall time and CPU time of the whole process, the time per step
 measured by vefs (last `wall_time` of the statistics over the steps), the
@@ -84,7 +90,7 @@ from vefs_tools.prm import (read_parameters, parameter, parameter_float,
 from vefs_tools.run import (results_directory, resolve, rel, nproc, cpu_model,
                             git_revision, vefs_command, run_serial_scene,
                             executable_id, snapshot_executable)
-from vefs_tools.statistics import read_statistics
+from vefs_tools.statistics import interpolate, read_statistics
 
 CASES = {
     "waters-king": {
@@ -179,9 +185,24 @@ def _f(fmt, x):
     return "n/a" if x is None else fmt % x
 
 
+def time_error(out_dir, reference_dir):
+    """Largest |probe_u_x - reference's| over the rows with t > 0."""
+    run = read_statistics(out_dir)
+    ref = read_statistics(reference_dir)
+    largest = 0.0
+    for t, u in zip(run["time"], run["probe_u_x"]):
+        u_ref = interpolate(ref["time"], ref["probe_u_x"], t)
+        if t > 0 and u_ref is not None:
+            largest = max(largest, abs(u - u_ref))
+    return largest
+
+
 def format_markdown(case, runs, levels, taus, info):
     spec = CASES[case]
     measures = [(k, label % info) for k, label in spec["measures"]]
+    if info.get("time_reference"):
+        measures.append(("time_error", "time error (probe velocity against "
+                         "tau = %g)" % info["time_reference"]))
     lines = [
         "# %s: convergence" % spec["title"],
         "",
@@ -250,6 +271,8 @@ def format_markdown(case, runs, levels, taus, info):
     else:
         header += ["frequency error", "amplitude loss / period",
                    "energy ratio"]
+    if info.get("time_reference"):
+        header.append("time error")
     header += ["min eig(conformation)", "non-positive points"]
     lines += ["| " + " | ".join(header) + " |",
               "|" + "---|" * len(header)]
@@ -280,6 +303,8 @@ def format_markdown(case, runs, levels, taus, info):
                 cells += [_f("%.3g", r["signed_frequency_error"]),
                           _f("%.3g", r["loss_per_period"]),
                           _f("%.4g", r["energy_ratio"])]
+            if info.get("time_reference"):
+                cells.append(_f("%.3g", r.get("time_error")))
             cells += [_f("%.3g", r.get("min_eigenvalue")),
                       _f("%d", r.get("non_positive"))]
             lines.append("| " + " | ".join(cells) + " |")
@@ -418,6 +443,9 @@ def parse_args(argv=None):
     p.add_argument("--t-max", type=float, default=10.0,
                    help="waters-king: compare for 0 < T <= t-max "
                    "(default %(default)s)")
+    p.add_argument("--time-reference", type=float, metavar="TAU_REF",
+                   help="also run every level at this time step and "
+                   "tabulate each run's time error against it")
     p.add_argument("--no-run", action="store_true",
                    help="do not run vefs; tabulate existing results")
     p.add_argument("--dry-run", action="store_true",
@@ -459,6 +487,8 @@ def main(argv=None):
               % (e.args[0] if e.args else e), file=sys.stderr)
         return 1
     taus = args.time_steps or [tau0, tau0 / 2, tau0 / 4]
+    runs_taus = taus + ([args.time_reference] if args.time_reference and
+                        args.time_reference not in taus else [])
     if len(set(taus)) != len(taus) or len(set(levels)) != len(levels):
         print("viscoelastic_convergence: repeated level or time step",
               file=sys.stderr)
@@ -475,7 +505,7 @@ def main(argv=None):
 
     if args.dry_run:
         for level in levels:
-            for tau in taus:
+            for tau in runs_taus:
                 name = run_name(stem, level, tau)
                 print("# ---- %s.prm ----" % name)
                 print(make_prm(base, level, tau, os.path.join(results, name),
@@ -510,7 +540,7 @@ def main(argv=None):
     executables = []
     failed = False
     for level in levels:
-        for tau in taus:
+        for tau in runs_taus:
             name = run_name(stem, level, tau)
             out_dir = os.path.join(results, name)
             info_file = os.path.join(results, name + ".json")
@@ -560,11 +590,23 @@ def main(argv=None):
                 if label not in executables:
                     executables.append(label)
             runs[(level, tau)] = r
+    if args.time_reference:
+        for level in levels:
+            reference = os.path.join(
+                results, run_name(stem, level, args.time_reference))
+            for tau in taus:
+                r = runs.get((level, tau), {})
+                if "error" not in r and "error" not in runs.get(
+                        (level, args.time_reference), {"error": 1}):
+                    r["time_error"] = time_error(
+                        os.path.join(results, run_name(stem, level, tau)),
+                        reference)
 
     info = {"date": datetime.date.today().isoformat(),
             "scene": rel(scene), "end_time": args.end_time,
             "command": command, "revisions": revisions, "t_max": args.t_max,
-            "plot": None, "sets": args.set, "executables": executables}
+            "plot": None, "sets": args.set, "executables": executables,
+            "time_reference": args.time_reference}
     os.makedirs(os.path.dirname(output), exist_ok=True)
     os.makedirs(os.path.dirname(plot_path), exist_ok=True)
     if plot(case, runs, levels, taus, plot_path, args.t_max):
