@@ -90,7 +90,7 @@ from vefs_tools.prm import (read_parameters, parameter, parameter_float,
 from vefs_tools.run import (results_directory, resolve, rel, nproc, cpu_model,
                             git_revision, vefs_command, run_serial_scene,
                             executable_id, snapshot_executable)
-from vefs_tools.statistics import interpolate, read_statistics
+from vefs_tools.statistics import largest_difference, read_statistics
 
 CASES = {
     "waters-king": {
@@ -183,18 +183,6 @@ def observed_orders(runs, level, taus, key):
 
 def _f(fmt, x):
     return "n/a" if x is None else fmt % x
-
-
-def time_error(out_dir, reference_dir):
-    """Largest |probe_u_x - reference's| over the rows with t > 0."""
-    run = read_statistics(out_dir)
-    ref = read_statistics(reference_dir)
-    largest = 0.0
-    for t, u in zip(run["time"], run["probe_u_x"]):
-        u_ref = interpolate(ref["time"], ref["probe_u_x"], t)
-        if t > 0 and u_ref is not None:
-            largest = max(largest, abs(u - u_ref))
-    return largest
 
 
 def format_markdown(case, runs, levels, taus, info):
@@ -598,9 +586,10 @@ def main(argv=None):
                 r = runs.get((level, tau), {})
                 if "error" not in r and "error" not in runs.get(
                         (level, args.time_reference), {"error": 1}):
-                    r["time_error"] = time_error(
-                        os.path.join(results, run_name(stem, level, tau)),
-                        reference)
+                    r["time_error"] = largest_difference(
+                        read_statistics(os.path.join(
+                            results, run_name(stem, level, tau))),
+                        read_statistics(reference), "probe_u_x")
 
     info = {"date": datetime.date.today().isoformat(),
             "scene": rel(scene), "end_time": args.end_time,

@@ -15,10 +15,10 @@ omega tau per period, gives 1.22).
 
 Usage: shear_wave_time_order.py OUTPUT_DIR OUTPUT_DIR_HALF_STEP
 """
-import math
 import sys
 
 from vefs_tools.shear_wave import analyse_run
+from vefs_tools.statistics import halving_order
 
 MIN_ORDER = 1.7
 
@@ -32,11 +32,7 @@ def main(output_dir, half_step_dir):
               % (r["periods"],
                  "n/a" if r["loss_per_period"] is None
                  else "%.2g" % r["loss_per_period"]))
-    ok = all(loss is not None and loss > 0 for loss in losses)
-    order = math.log2(losses[0] / losses[1]) if ok else float("nan")
-    print("observed order of the amplitude loss: %.2g" % order)
-    print("order at least %g: %s"
-          % (MIN_ORDER, "yes" if ok and order >= MIN_ORDER else "NO"))
+    halving_order("the amplitude loss", losses, MIN_ORDER)
     return 0
 
 

@@ -16,38 +16,23 @@ scheme 1).
 
 Usage: waters_king_time_order.py OUTPUT_DIR HALF_STEP_DIR REFERENCE_DIR
 """
-import math
 import sys
 
-from vefs_tools.statistics import interpolate, read_statistics
+from vefs_tools.statistics import (halving_order, largest_difference,
+                                   read_statistics)
 
 MIN_ORDER = 1.8
-
-
-def time_error(directory, reference):
-    """Largest |probe_u_x - reference's| over the rows with t > 0."""
-    run = read_statistics(directory)
-    largest = 0.0
-    for t, u in zip(run["time"], run["probe_u_x"]):
-        u_ref = interpolate(reference["time"], reference["probe_u_x"], t)
-        if t > 0 and u_ref is not None:
-            largest = max(largest, abs(u - u_ref))
-    return largest, run["time"][-1]
 
 
 def main(output_dir, half_step_dir, reference_dir):
     reference = read_statistics(reference_dir)
     errors = []
     for directory in (output_dir, half_step_dir):
-        error, end = time_error(directory, reference)
-        errors.append(error)
+        run = read_statistics(directory)
+        errors.append(largest_difference(run, reference, "probe_u_x"))
         print("end time %.3g, time error of the centreline velocity: %.2g"
-              % (end, error))
-    ok = all(e > 0 and math.isfinite(e) for e in errors)
-    order = math.log2(errors[0] / errors[1]) if ok else float("nan")
-    print("observed order of the time error: %.2g" % order)
-    print("order at least %g: %s"
-          % (MIN_ORDER, "yes" if ok and order >= MIN_ORDER else "NO"))
+              % (run["time"][-1], errors[-1]))
+    halving_order("the time error", errors, MIN_ORDER)
     return 0
 
 

@@ -16,6 +16,15 @@ read_csv_reference(path)
 interpolate(ts, ys, t)
     Piecewise linear interpolation of ys(ts) at t; None outside [ts[0], ts[-1]].
 
+largest_difference(run, reference, name)
+    Largest |run[name] - reference[name]| over the rows of run with t > 0,
+    the reference interpolated in time: a time-step study's error against a
+    run with a much shorter step.
+
+halving_order(what, errors, minimum)
+    Print the observed order log2(e1/e2) of the errors at tau and tau/2 and
+    whether it reaches minimum (the test checkers' verdict lines).
+
 parabolic_vertex(p0, p1, p2)
     (t, y) of the vertex of the parabola through three samples (t, y).
 
@@ -27,10 +36,12 @@ columns of runs.
 """
 
 import bisect
+import math
 import os
 
 __all__ = ["read_statistics", "read_csv_reference", "interpolate",
-           "column", "statistics_path", "parabolic_vertex", "zero_crossings"]
+           "column", "statistics_path", "parabolic_vertex", "zero_crossings",
+           "largest_difference", "halving_order"]
 
 
 def statistics_path(path_or_dir):
@@ -161,6 +172,29 @@ def interpolate(ts, ys, t):
         return y1
     w = (t - t0) / (t1 - t0)
     return (1.0 - w) * y0 + w * y1
+
+
+def largest_difference(run, reference, name):
+    """Largest |run[name](t) - reference[name](t)| over the rows of run (a
+    read_statistics dict) with 0 < t, the reference's column interpolated
+    linearly in t; rows beyond the reference's end are skipped."""
+    largest = 0.0
+    for t, y in zip(run["time"], run[name]):
+        y_ref = interpolate(reference["time"], reference[name], t)
+        if t > 0 and y_ref is not None:
+            largest = max(largest, abs(y - y_ref))
+    return largest
+
+
+def halving_order(what, errors, minimum):
+    """Print the observed order p = log2(e1 / e2) of the errors [e1, e2] at
+    tau and tau/2 ('observed order of WHAT') and whether p >= minimum;
+    'NO' also for an error missing, zero or not finite."""
+    ok = all(e is not None and e > 0 and math.isfinite(e) for e in errors)
+    order = math.log2(errors[0] / errors[1]) if ok else float("nan")
+    print("observed order of %s: %.2g" % (what, order))
+    print("order at least %g: %s"
+          % (minimum, "yes" if ok and order >= minimum else "NO"))
 
 
 def parabolic_vertex(p0, p1, p2):
