@@ -93,9 +93,9 @@ namespace vefs
         "momentum equation weighs the new forces by 'New force weight' w "
         "(0.51) and the old ones by 1 - w (nearly the trapezoidal rule: "
         "velocity Verlet for a body in free fall or a surface wave), the "
-        "stress law takes the midpoint "
-        "velocity and the relaxation is integrated exactly over the step. A "
-        "freely falling body then follows the exact parabola at any step. "
+        "stress law takes the midpoint velocity and the relaxation is "
+        "integrated exactly over the step. A freely falling body then "
+        "follows the exact parabola at any step. "
         "See doc/time_step_flow.md. Not used with a prescribed velocity, "
         "which is always traced at mid-step.");
       add_number_or_automatic(
@@ -111,13 +111,16 @@ namespace vefs
         "omega tau per period: a first-order error. 1/2 (the trapezoidal "
         "rule) makes it second order (the shear wave's amplitude loss at "
         "h = 1/256: orders 1.95 and 1.92 from T/50 to T/200, against 1.23 "
-        "and 1.13 with 0.51; test shear_wave_time_order) but damps no mode "
-        "with omega tau >> 1: soft sheets wrinkle at the cell scale, the "
-        "contact force alternates from step to step, and runs on 1 and 2 "
-        "ranks part during an impact. automatic: 0.51 (the 2D stiff ball's "
-        "first contact then loses 5.9 % of its kinetic energy at impact, "
-        "4.9 % with 1/2; doc/time_step_flow.md). Only the second-order "
-        "scheme reads it: the first-order scheme's forces are all new.");
+        "and 1.13 with 0.51, test shear_wave_time_order; Waters & King's "
+        "time error at level 3 from CFL 6.5 to 0.8: orders 2.08, 2.13, 2.23 "
+        "against 1.82, 1.63, 1.36, test waters_king_time_order) but damps "
+        "no mode with omega tau >> 1: soft sheets wrinkle at the cell "
+        "scale, the contact force alternates from step to step, and runs on "
+        "1 and 2 ranks part during an impact. automatic: 0.51 (the 2D stiff "
+        "ball's first contact then loses 5.9 % of its kinetic energy at "
+        "impact, 4.9 % with 1/2; doc/time_step_flow.md). Only the "
+        "second-order scheme reads it: the first-order scheme's forces are "
+        "all new.");
       prm.add_parameter("Maximum steps",
                         maximum_steps,
                         "Largest number of time steps: a scene whose End "
@@ -149,7 +152,7 @@ namespace vefs
     if (!second_order)
       new_force_weight = 1;
     else if (automatic_new_force_weight)
-      new_force_weight = 0.51;
+      new_force_weight = default_new_force_weight;
   }
 
   void

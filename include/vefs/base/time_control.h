@@ -56,8 +56,9 @@ namespace vefs
      * 1 for the first-order scheme; set by resolve_scheme() while
      * @p automatic_new_force_weight.
      */
-    double new_force_weight           = 0.51;
-    bool   automatic_new_force_weight = true;
+    static constexpr double default_new_force_weight = 0.51;
+    double                  new_force_weight         = default_new_force_weight;
+    bool                    automatic_new_force_weight = true;
 
     /**
      * 'automatic' becomes second order for a material with a stress
