@@ -10,12 +10,17 @@ matplotlib):
       [--levels 5 6 7] [--steps-per-period 20 40] [--periods 3]
       [--results-dir benchmarks/results/standing_wave]
       [--output benchmarks/results/standing_wave.md] [--plot doc/standing_wave.png]
-      [--no-run]
+      [--set SECTION/ENTRY=VALUE ...] [--time-reference N] [--no-run]
 
 Each run is the scene with Maximum level = L (Bulk level = L - 2), the time
 step T/n (T the exact linear period) and the end time --periods T, on one
-rank; its output goes to <results-dir>/L<L>_n<n>/. --no-run only analyses
-the runs already there.
+rank; its output goes to <results-dir>/L<L>_n<n>/. --set changes an entry
+of the scene in every run (e.g. --set 'Time/Scheme=second order'). With
+--time-reference N every level also runs at T/N, and the table gives each
+run's time error: the largest difference of the surface height at the wall
+to that run's (interpolated in time), with its observed order between
+successive steps per period. --no-run only analyses the runs already
+there.
 """
 import argparse
 import math
@@ -23,10 +28,10 @@ import os
 import sys
 
 from vefs_tools import REPO_ROOT as ROOT
-from vefs_tools.prm import set_entry
+from vefs_tools.prm import apply_settings, set_entry
 from vefs_tools.run import run_serial_scene, write_report
 from vefs_tools.standing_wave import measure, exact_wave
-from vefs_tools.statistics import read_statistics
+from vefs_tools.statistics import largest_difference, read_statistics
 
 # The scene's exact period (g = 9.81, L = 0.1, d = 0.05).
 K = math.pi / 0.1
@@ -61,15 +66,19 @@ def main():
         ROOT, "benchmarks", "results", "standing_wave.md"))
     parser.add_argument("--plot", default=os.path.join(
         ROOT, "doc", "standing_wave.png"))
+    parser.add_argument("--set", action="append", default=[],
+                        metavar="SECTION/ENTRY=VALUE")
+    parser.add_argument("--time-reference", type=int, metavar="N")
     parser.add_argument("--no-run", action="store_true")
     args = parser.parse_args()
 
     os.makedirs(args.results_dir, exist_ok=True)
     with open(os.path.join(ROOT, "prm", "standing_wave_2d.prm")) as f:
-        base = f.read()
+        base = apply_settings(f.read(), args.set)
     rows = []
+    reference_runs = [args.time_reference] if args.time_reference else []
     for level in args.levels:
-        for n in args.steps_per_period:
+        for n in reference_runs + args.steps_per_period:
             name = run_name(level, n)
             out = os.path.join(args.results_dir, name)
             if not args.no_run:
@@ -77,11 +86,19 @@ def main():
                 if not run_serial_scene(os.path.abspath(args.vefs),
                                         args.results_dir, name, text):
                     continue
+            if n in reference_runs:
+                continue
             m = measure(out)
             s = read_statistics(out)
             steps = len(s["step"]) - 1
+            time_error = None
+            if args.time_reference:
+                time_error = largest_difference(s, read_statistics(
+                    os.path.join(args.results_dir,
+                                 run_name(level, args.time_reference))),
+                    "wall_height")
             rows.append((level, n, m, s["wall_time"][-1], steps,
-                         max(s["cells"]), max(s["cfl"])))
+                         max(s["cells"]), max(s["cfl"]), time_error))
 
     lines = [
         "# Standing gravity wave: sharp free surface against linear theory",
@@ -94,16 +111,36 @@ def main():
         "period from its extrema, divided by the exact viscous decay "
         "exp(-2 nu k^2 T) (0.07 %% per period). Exact period %.4f s." % PERIOD,
         "",
-        "| h | tau | steps | max cells | max CFL | frequency error | "
-        "numerical amplitude loss per period | wall time [s] |",
-        "|---|-----|-------|-----------|---------|-----------------|---------"
-        "--------------------------|---------------|",
     ]
-    for level, n, m, wall, steps, cells, cfl in rows:
+    if args.set:
+        lines += ["Scene entries changed: %s." % ", ".join(
+            "`%s`" % x for x in args.set), ""]
+    if args.time_reference:
+        lines += ["Time error: the largest difference of the surface height "
+                  "at the wall to the run at T/%d on the same mesh, "
+                  "(order: log2 of its ratio to the previous row's)."
+                  % args.time_reference, ""]
+    lines += [
+        "| h | tau | steps | max cells | max CFL | frequency error | "
+        "numerical amplitude loss per period | time error [m] (order) | "
+        "wall time [s] |",
+        "|---|---|---|---|---|---|---|---|---|",
+    ]
+    previous = {}
+    for level, n, m, wall, steps, cells, cfl, time_error in rows:
         loss = m["amplitude_loss_per_period"]
-        lines.append("| L/%d | T/%d | %d | %d | %.2g | %+.3f %% | %s | %.1f |" % (
-            2 ** level, n, steps, cells, cfl, 100 * m["frequency_error"],
-            "%+.2f %%" % (100 * loss) if loss is not None else "-", wall))
+        error = "-"
+        if time_error is not None:
+            error = "%.3g" % time_error
+            if previous.get(level) and time_error > 0:
+                error += " (%.2f)" % math.log2(previous[level] / time_error)
+            previous[level] = time_error
+        lines.append("| L/%d | T/%d | %d | %d | %.2g | %+.3f %% | %s | %s | "
+                     "%.1f |" % (
+                         2 ** level, n, steps, cells, cfl,
+                         100 * m["frequency_error"],
+                         "%+.2f %%" % (100 * loss) if loss is not None
+                         else "-", error, wall))
     lines.append("")
     lines.append("A negative amplitude loss is a gain. The wall times were "
                  "taken on the 2-core development machine, other work "
@@ -123,7 +160,7 @@ def main():
         return
     fig, ax = plt.subplots(figsize=(8, 4))
     finest = None
-    for level, n, m, wall, steps, cells, cfl in rows:
+    for level, n, m, wall, steps, cells, cfl, _ in rows:
         out = os.path.join(args.results_dir, run_name(level, n))
         s = read_statistics(out)
         omega, decay, level_height, amplitude = exact_wave(out)
