@@ -76,9 +76,11 @@ def main():
     with open(os.path.join(ROOT, "prm", "standing_wave_2d.prm")) as f:
         base = apply_settings(f.read(), args.set)
     rows = []
-    reference_runs = [args.time_reference] if args.time_reference else []
+    reference_only = [args.time_reference] if args.time_reference and \
+        args.time_reference not in args.steps_per_period else []
     for level in args.levels:
-        for n in reference_runs + args.steps_per_period:
+        reference = None
+        for n in reference_only + args.steps_per_period:
             name = run_name(level, n)
             out = os.path.join(args.results_dir, name)
             if not args.no_run:
@@ -86,17 +88,18 @@ def main():
                 if not run_serial_scene(os.path.abspath(args.vefs),
                                         args.results_dir, name, text):
                     continue
-            if n in reference_runs:
+            if n in reference_only:
                 continue
             m = measure(out)
             s = read_statistics(out)
             steps = len(s["step"]) - 1
             time_error = None
             if args.time_reference:
-                time_error = largest_difference(s, read_statistics(
-                    os.path.join(args.results_dir,
-                                 run_name(level, args.time_reference))),
-                    "wall_height")
+                if reference is None:
+                    reference = read_statistics(os.path.join(
+                        args.results_dir,
+                        run_name(level, args.time_reference)))
+                time_error = largest_difference(s, reference, "wall_height")
             rows.append((level, n, m, s["wall_time"][-1], steps,
                          max(s["cells"]), max(s["cfl"]), time_error))
 

@@ -580,16 +580,18 @@ def main(argv=None):
             runs[(level, tau)] = r
     if args.time_reference:
         for level in levels:
-            reference = os.path.join(
-                results, run_name(stem, level, args.time_reference))
+            if "error" in runs.get((level, args.time_reference),
+                                   {"error": "not run"}):
+                continue
+            reference = read_statistics(os.path.join(
+                results, run_name(stem, level, args.time_reference)))
             for tau in taus:
-                r = runs.get((level, tau), {})
-                if "error" not in r and "error" not in runs.get(
-                        (level, args.time_reference), {"error": 1}):
+                r = runs.get((level, tau))
+                if r is not None and "error" not in r:
                     r["time_error"] = largest_difference(
                         read_statistics(os.path.join(
                             results, run_name(stem, level, tau))),
-                        read_statistics(reference), "probe_u_x")
+                        reference, "probe_u_x")
 
     info = {"date": datetime.date.today().isoformat(),
             "scene": rel(scene), "end_time": args.end_time,

@@ -46,6 +46,17 @@ namespace
     std::ofstream(file) << text;
   }
 
+  /** Read @p file into @p parameters as vefs does and check them (throws
+   * vefs::InputError). */
+  void
+  read_and_check(vefs::Parameters &parameters, const std::string &file)
+  {
+    ParameterHandler prm;
+    parameters.declare(prm);
+    vefs::read_parameter_file(prm, file, vefs::Parameters::moved_entries);
+    parameters.check();
+  }
+
   void
   report(std::ostream &out, const std::string &label, const bool passed)
   {
@@ -227,12 +238,7 @@ main()
             "subsection Material\n" + material + "end\nsubsection Time\n" +
               time + "end\n");
       vefs::Parameters parameters;
-      ParameterHandler prm;
-      parameters.declare(prm);
-      vefs::read_parameter_file(prm,
-                                "automatic.prm",
-                                vefs::Parameters::moved_entries);
-      parameters.check();
+      read_and_check(parameters, "automatic.prm");
       return std::string(parameters.stress.stress_update ==
                              vefs::StressUpdate::exponential
                            ? "exponential"
@@ -278,12 +284,7 @@ main()
       try
         {
           vefs::Parameters parameters;
-          ParameterHandler prm;
-          parameters.declare(prm);
-          vefs::read_parameter_file(prm,
-                                    "weight.prm",
-                                    vefs::Parameters::moved_entries);
-          parameters.check();
+          read_and_check(parameters, "weight.prm");
           std::ostringstream text;
           text << parameters.flow_step().new_force_weight;
           return text.str();
@@ -319,12 +320,7 @@ main()
       write("stress_interpolation.prm",
             "subsection Transport\n" + transport + "end\n");
       vefs::Parameters parameters;
-      ParameterHandler prm;
-      parameters.declare(prm);
-      vefs::read_parameter_file(prm,
-                                "stress_interpolation.prm",
-                                vefs::Parameters::moved_entries);
-      parameters.check();
+      read_and_check(parameters, "stress_interpolation.prm");
       return std::string(parameters.transport.cubic_stress_interpolation()
                            ? "limited cubic"
                            : "linear");
@@ -362,12 +358,7 @@ main()
               "end\nsubsection Time\n" + time + "end\nsubsection Transport\n" +
               transport + "end\n");
       vefs::Parameters parameters;
-      ParameterHandler prm;
-      parameters.declare(prm);
-      vefs::read_parameter_file(prm,
-                                "velocity_interpolation.prm",
-                                vefs::Parameters::moved_entries);
-      parameters.check();
+      read_and_check(parameters, "velocity_interpolation.prm");
       const auto velocity = parameters.transport.velocity_interpolation;
       return std::string(velocity == vefs::VelocityInterpolation::linear
                            ? "linear"
@@ -478,12 +469,7 @@ main()
               transport + "end\nsubsection Mesh refinement\n" + mesh + "end\n" +
               extra);
       vefs::Parameters parameters;
-      ParameterHandler prm;
-      parameters.declare(prm);
-      vefs::read_parameter_file(prm,
-                                "level_set.prm",
-                                vefs::Parameters::moved_entries);
-      parameters.check();
+      read_and_check(parameters, "level_set.prm");
       switch (parameters.transport.level_set_interpolation)
         {
           case vefs::LevelSetInterpolation::linear:
@@ -543,12 +529,7 @@ main()
               "subsection Transport\n" + transport +
               "end\nsubsection Mesh refinement\n" + mesh + "end\n");
       vefs::Parameters parameters;
-      ParameterHandler prm;
-      parameters.declare(prm);
-      vefs::read_parameter_file(prm,
-                                "remap.prm",
-                                vefs::Parameters::moved_entries);
-      parameters.check();
+      read_and_check(parameters, "remap.prm");
       std::ostringstream text;
       text << "remap distance " << parameters.transport.remap_distance
            << ", kept at redistancing "
@@ -624,12 +605,7 @@ main()
               time + "end\nsubsection Transport\n" + transport +
               "end\nsubsection Mesh refinement\n" + mesh + "end\n");
       vefs::Parameters parameters;
-      ParameterHandler prm;
-      parameters.declare(prm);
-      vefs::read_parameter_file(prm,
-                                "band.prm",
-                                vefs::Parameters::moved_entries);
-      parameters.check();
+      read_and_check(parameters, "band.prm");
       return std::string(!parameters.mesh.band_predicted() ? "widened"
                          : parameters.mesh.band_in_one_change()
                            ? "predicted, one change"
