@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Checker of the waters_king_time_order test: Waters & King's start-up
 flow (tests/waters_king_2d.prm) on level 2 with the second-order scheme and
-'Time/New force weight = 0.5' at tau = 0.04 and tau/2, to T = 5.
+the default 'Time/New force weight' (1/2 without contact walls) at tau =
+0.04 and tau/2, to T = 5.
 
 Reference: the same scene at tau = 0.0025 (the run's third directory). On
 one mesh the fully discrete solution converges to the semi-discrete one as
@@ -11,8 +12,8 @@ exact solution would show the spatial error instead, which dominates from
 tau = 0.02 on (doc/time_step_flow.md). The reference's own time error,
 (0.0025 / 0.02)^2 = 1/64 of the half step's, moves the order by about
 0.03. The observed order p = log2(e(tau) / e(tau/2)) must be at least 1.8
-(2.34 measured; the default weight w = 0.51 gives 1.47, the first-order
-scheme 1).
+(2.34 measured; w = 0.51, the default with contact walls, gives 1.47, the
+first-order scheme 1).
 
 Usage: waters_king_time_order.py OUTPUT_DIR HALF_STEP_DIR REFERENCE_DIR
 """

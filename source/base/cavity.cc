@@ -150,6 +150,14 @@ namespace vefs
   template bool
   CavityParameters::on_slip_or_contact_wall(const dealii::Point<3> &) const;
 
+  bool
+  CavityParameters::has_contact_walls(const unsigned int dimension) const
+  {
+    return std::find(wall_type.begin(),
+                     wall_type.begin() + 2 * dimension,
+                     WallType::contact) != wall_type.begin() + 2 * dimension;
+  }
+
   std::vector<unsigned int>
   CavityParameters::periodic_directions() const
   {

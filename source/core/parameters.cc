@@ -168,7 +168,8 @@ namespace vefs
     time.resolve_scheme(regime != Regime::newtonian &&
                           !transport.velocity_is_prescribed() &&
                           !(material.has_dumbbells() && material.alpha != 0),
-                        stress.stress_theta);
+                        stress.stress_theta,
+                        cavity.has_contact_walls(dimension));
     // Cubic interpolation at the feet keeps the elastic waves of a solid
     // that holds its shape under its weight; a soft one pays for it in steps
     // and solves (doc/bouncing_ball.md, "The interpolation at the feet").

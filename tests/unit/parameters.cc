@@ -272,15 +272,16 @@ main()
   }
 
   {
-    // 'Time/New force weight = automatic': 0.51 for the second-order scheme
-    // (a material with a stress), 1 for the first-order one. A number stays
-    // with the second-order scheme; it is refused with the first-order one
-    // and outside [0.5, 1].
+    // 'Time/New force weight = automatic': 1/2 for the second-order scheme
+    // (a material with a stress), 0.51 if a wall is a contact wall, 1 for
+    // the first-order scheme. A number stays with the second-order scheme;
+    // it is refused with the first-order one and outside [0.5, 1].
     const auto weight = [](const std::string &material,
-                           const std::string &time) {
+                           const std::string &time,
+                           const std::string &walls = "") {
       write("weight.prm",
             "subsection Material\n" + material + "end\nsubsection Time\n" +
-              time + "end\n");
+              time + "end\nsubsection Walls\n" + walls + "end\n");
       try
         {
           vefs::Parameters parameters;
@@ -298,6 +299,13 @@ main()
                                 "  set Polymer viscosity = 10\n"
                                 "  set Relaxation time = 0.005\n";
     out << "new force weight automatic, elastic solid: " << weight(elastic, "")
+        << '\n';
+    out << "the same, a contact floor: "
+        << weight(elastic, "", "  set y- = contact\n") << '\n';
+    out << "the same, a contact floor, first-order scheme: "
+        << weight(elastic,
+                  "  set Scheme = first order\n",
+                  "  set y- = contact\n")
         << '\n';
     out << "the same, first-order scheme: "
         << weight(elastic, "  set Scheme = first order\n") << '\n';

@@ -59,6 +59,10 @@ namespace vefs
     bool
     on_slip_or_contact_wall(const dealii::Point<dim> &p) const;
 
+    /** Whether a wall of a @p dimension-D scene is a contact wall. */
+    bool
+    has_contact_walls(const unsigned int dimension) const;
+
     /** Coordinate directions whose two walls are periodic. */
     std::vector<unsigned int>
     periodic_directions() const;

@@ -56,18 +56,27 @@ namespace vefs
      * 1 for the first-order scheme; set by resolve_scheme() while
      * @p automatic_new_force_weight.
      */
-    static constexpr double default_new_force_weight = 0.51;
-    double                  new_force_weight         = default_new_force_weight;
-    bool                    automatic_new_force_weight = true;
+    double new_force_weight           = trapezoidal_new_force_weight;
+    bool   automatic_new_force_weight = true;
+    /** The trapezoidal rule: second order, damps no mode. */
+    static constexpr double trapezoidal_new_force_weight = 0.5;
+    /**
+     * With contact walls: impacts excite modes of omega tau >> 1, which
+     * this weight damps (doc/time_step_flow.md).
+     */
+    static constexpr double impact_new_force_weight = 0.51;
 
     /**
      * 'automatic' becomes second order for a material with a stress
      * (@p has_stress) unless @p stress_theta is below 1, first order
-     * otherwise; the new forces' weight follows the scheme. Throws InputError
-     * for a weight given to the first-order scheme.
+     * otherwise; the new forces' weight follows the scheme, and in a
+     * cavity with contact walls (@p has_contact_walls) it damps impacts.
+     * Throws InputError for a weight given to the first-order scheme.
      */
     void
-    resolve_scheme(const bool has_stress, const double stress_theta);
+    resolve_scheme(const bool   has_stress,
+                   const double stress_theta,
+                   const bool   has_contact_walls);
   };
 
   /** When the visualization is written, and what the screen shows:
