@@ -154,7 +154,7 @@ namespace vefs
     transport.resolve_level_set(dimension,
                                 mesh.band_placement ==
                                   BandPlacement::predicted_one_change);
-    stress.resolve(regime, material.has_dumbbells());
+    stress.resolve();
     // Steps kept through impacts (the seed's fixed steps) reach CFL
     // numbers of tens: the band is then refined ahead of the surface
     // (doc/bouncing_ball_3d_study.md, "Settings of the fine scenes").

@@ -117,7 +117,7 @@ main(int argc, char **argv)
 
     unit_test::FlowStepSetup setup;
     setup.cavity.cavity_upper = {1, 1};
-    setup.stress.resolve(setup.material.regime(), false);
+    setup.stress.resolve();
     const double                   tau        = 0.01;
     const vefs::FlowStepParameters parameters = setup.step(4, tau);
     const auto                    &material   = setup.material;

@@ -80,7 +80,7 @@ namespace
         material.polymer_viscosity = 2;
         material.relaxation_time   = 0.05;
       }
-    setup.stress.resolve(material.regime(), false);
+    setup.stress.resolve();
     const double                   tau        = 0.01;
     const vefs::FlowStepParameters parameters = setup.step(2, tau);
     const vefs::Rheology<dim>      rheology(material, setup.stress, 0.);
@@ -273,7 +273,7 @@ namespace
     setup.material.gravity.assign(dim, 0.);
     setup.material.gravity[dim - 1]  = -9.81;
     setup.material.solvent_viscosity = 0.5;
-    setup.stress.resolve(setup.material.regime(), false);
+    setup.stress.resolve();
     const double                   tau        = 0.01;
     const vefs::FlowStepParameters parameters = setup.step(2, tau);
     const vefs::Rheology<dim>      rheology(setup.material, setup.stress, 0.);

@@ -114,13 +114,13 @@ namespace vefs
     declare(dealii::ParameterHandler &prm);
 
     /**
-     * 'automatic' becomes exponential for an elastic solid (an impact
-     * breaks the linear update: doc/time_step_flow.md, step 9) and linear,
-     * the seed's, for a liquid; exponential for dumbbells (their update:
-     * doc/dumbbells.md).
+     * 'automatic' becomes exponential: an impact breaks the linear update
+     * of an elastic solid (doc/time_step_flow.md, step 9), large steps that
+     * of an Oldroyd-B liquid (doc/viscoelastic.md, "Positivity"), and the
+     * dumbbells' update is the exponential one (doc/dumbbells.md).
      */
     void
-    resolve(const Regime regime, const bool dumbbells);
+    resolve();
 
     StressUpdate stress_update = StressUpdate::automatic;
     /** Weight of the new velocity in the stress of the diffusion step. */
