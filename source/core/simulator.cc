@@ -503,19 +503,13 @@ namespace vefs
           statistics.probe_stress       = probe.stress;
           statistics.probe_stress_error = probe.stress_error;
           // The columns are not zeroed outside: say once what they hold.
-          if (!probe.in_liquid && !probe_outside_said)
-            {
-              if (Utilities::MPI::this_mpi_process(comm) == 0)
-                std::cerr << "vefs: warning: step " << time.step()
-                          << " (t = " << time.time()
-                          << "): the point of 'Postprocess/Probe point' lies "
-                             "outside the liquid; then the columns probe_u_* "
-                             "hold the velocity field there, which outside "
-                             "the liquid is only the extension the transport "
-                             "uses (0 beyond the band around the surface)"
-                          << std::endl;
-              probe_outside_said = true;
-            }
+          if (!probe.in_liquid)
+            warn_once(probe_outside_said,
+                      "the point of 'Postprocess/Probe point' lies "
+                      "outside the liquid; then the columns probe_u_* "
+                      "hold the velocity field there, which outside "
+                      "the liquid is only the extension the transport "
+                      "uses (0 beyond the band around the surface)");
         }
       if (exact_final_level_set)
         {
@@ -530,21 +524,16 @@ namespace vefs
         statistics.elastic_wave_number =
           std::sqrt(rheology.shear_modulus() / parameters.material.density) *
           time.tau() / levels.finest_cell_size;
-      if (statistics.elastic_wave_number > trusted_elastic_wave_number &&
-          !untrusted_wave_number_said)
+      if (statistics.elastic_wave_number > trusted_elastic_wave_number)
         {
-          if (Utilities::MPI::this_mpi_process(comm) == 0)
-            std::cerr << "vefs: warning: step " << time.step()
-                      << " (t = " << time.time()
-                      << "): an elastic wave crosses "
-                      << statistics.elastic_wave_number
-                      << " of the finest cells in a step, beyond the "
-                      << trusted_elastic_wave_number
-                      << " up to which the scheme keeps the energy of an "
-                         "impact (doc/reliability.md, \"Stiff solids\"); "
-                         "shorter steps ('Time/Time step') keep it"
-                      << std::endl;
-          untrusted_wave_number_said = true;
+          std::ostringstream what;
+          what << "an elastic wave crosses " << statistics.elastic_wave_number
+               << " of the finest cells in a step, beyond the "
+               << trusted_elastic_wave_number
+               << " up to which the scheme keeps the energy of an "
+                  "impact (doc/reliability.md, \"Stiff solids\"); "
+                  "shorter steps ('Time/Time step') keep it";
+          warn_once(untrusted_wave_number_said, what.str());
         }
       statistics.wall_time = wall_time_offset + wall_clock.wall_time();
     }
@@ -588,6 +577,18 @@ namespace vefs
           << " s left"
           << (statistics.unsettled_contact_set ? "  contact set unsettled" : "")
           << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::warn_once(bool &said, const std::string &what) const
+  {
+    if (said)
+      return;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      std::cerr << "vefs: warning: step " << time.step()
+                << " (t = " << time.time() << "): " << what << std::endl;
+    said = true;
   }
 
   template <int dim>

@@ -104,6 +104,14 @@ namespace vefs
     report(const LiquidDomain<dim> &domain);
 
     /**
+     * Say @p what on standard error with the step and time, unless @p said
+     * (the warning was given before in this run); set @p said. Collective
+     * only in that every rank keeps @p said the same.
+     */
+    void
+    warn_once(bool &said, const std::string &what) const;
+
+    /**
      * Stop the run at @p step with @p problem: write the current state if
      * it is finite (@p state_is_good: it passed every check) and throw
      * SolverError naming the step and what was kept.
