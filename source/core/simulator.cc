@@ -491,6 +491,24 @@ namespace vefs
             stress.min_conformation_eigenvalue;
           statistics.non_positive_conformation_points =
             stress.non_positive_points;
+          if (stress.non_positive_points > 0)
+            {
+              // The linear update loses it at large steps; the run goes on
+              // (doc/viscoelastic.md, "Positivity").
+              std::ostringstream what;
+              what << "the conformation tensor is not positive definite at "
+                   << stress.non_positive_points
+                   << " quadrature points (smallest eigenvalue "
+                   << stress.min_conformation_eigenvalue
+                   << "; columns non_positive_conformation_points and "
+                      "min_conformation_eigenvalue): "
+                   << (parameters.stress.stress_update ==
+                           StressUpdate::exponential
+                         ? "shorten 'Time/Time step'"
+                         : "'Stress/Stress update = exponential' keeps it "
+                           "positive definite, or shorten 'Time/Time step'");
+              warn_once(non_positive_conformation_said, what.str());
+            }
         }
       if (!parameters.postprocess.probe_point.empty())
         {

@@ -154,7 +154,9 @@ namespace vefs
     /** Whether the probe point was said to lie outside the liquid. */
     bool probe_outside_said = false;
     /** Whether the elastic wave number was said to lie beyond the trusted. */
-    bool  untrusted_wave_number_said = false;
+    bool untrusted_wave_number_said = false;
+    /** Whether a conformation tensor was said not to be positive definite. */
+    bool  non_positive_conformation_said = false;
     Timer wall_clock;
     /** The wall time of the run before it was resumed. */
     double wall_time_offset = 0;
