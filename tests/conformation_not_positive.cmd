@@ -57,14 +57,5 @@ PRM
   echo "$update update: exit status $status, warnings $(grep -c '^vefs: warning' $update.stderr || true)"
   sed -E -e 's/at [0-9]+ quadrature/at # quadrature/' \
          -e 's/eigenvalue [-+0-9.e]+;/eigenvalue #;/' $update.stderr
-  /usr/bin/python3 - $update <<'PY'
-import sys
-directory = sys.argv[1]
-lines = open(directory + "/statistics").read().splitlines()
-header = [l for l in lines if l.startswith("# step")][0].split()[1:]
-rows = [l.split() for l in lines if not l.startswith("#")]
-smallest = min(float(r[header.index("min_conformation_eigenvalue")]) for r in rows)
-print("%s update: smallest eigenvalue of c positive in every step: %s"
-      % (directory, "yes" if smallest > 0 else "no"))
-PY
+  /usr/bin/python3 "$TEST_SOURCE_DIR/conformation_not_positive.py" $update
 done

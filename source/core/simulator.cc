@@ -495,19 +495,21 @@ namespace vefs
             {
               // The linear update loses it at large steps; the run goes on
               // (doc/viscoelastic.md, "Positivity").
-              std::ostringstream what;
-              what << "the conformation tensor is not positive definite at "
-                   << stress.non_positive_points
-                   << " quadrature points (smallest eigenvalue "
-                   << stress.min_conformation_eigenvalue
-                   << "; columns non_positive_conformation_points and "
-                      "min_conformation_eigenvalue): "
-                   << (parameters.stress.stress_update ==
-                           StressUpdate::exponential
-                         ? "shorten 'Time/Time step'"
-                         : "'Stress/Stress update = exponential' keeps it "
-                           "positive definite, or shorten 'Time/Time step'");
-              warn_once(non_positive_conformation_said, what.str());
+              warn_once(non_positive_conformation_said, [&]() {
+                std::ostringstream what;
+                what << "the conformation tensor is not positive definite at "
+                     << stress.non_positive_points
+                     << " quadrature points (smallest eigenvalue "
+                     << stress.min_conformation_eigenvalue
+                     << "; columns non_positive_conformation_points and "
+                        "min_conformation_eigenvalue): "
+                     << (parameters.stress.stress_update ==
+                             StressUpdate::exponential
+                           ? "shorten 'Time/Time step'"
+                           : "'Stress/Stress update = exponential' keeps it "
+                             "positive definite, or shorten 'Time/Time step'");
+                return what.str();
+              });
             }
         }
       if (!parameters.postprocess.probe_point.empty())
@@ -522,12 +524,14 @@ namespace vefs
           statistics.probe_stress_error = probe.stress_error;
           // The columns are not zeroed outside: say once what they hold.
           if (!probe.in_liquid)
-            warn_once(probe_outside_said,
-                      "the point of 'Postprocess/Probe point' lies "
-                      "outside the liquid; then the columns probe_u_* "
-                      "hold the velocity field there, which outside "
-                      "the liquid is only the extension the transport "
-                      "uses (0 beyond the band around the surface)");
+            warn_once(probe_outside_said, []() {
+              return std::string(
+                "the point of 'Postprocess/Probe point' lies "
+                "outside the liquid; then the columns probe_u_* "
+                "hold the velocity field there, which outside "
+                "the liquid is only the extension the transport "
+                "uses (0 beyond the band around the surface)");
+            });
         }
       if (exact_final_level_set)
         {
@@ -543,7 +547,7 @@ namespace vefs
           std::sqrt(rheology.shear_modulus() / parameters.material.density) *
           time.tau() / levels.finest_cell_size;
       if (statistics.elastic_wave_number > trusted_elastic_wave_number)
-        {
+        warn_once(untrusted_wave_number_said, [&]() {
           std::ostringstream what;
           what << "an elastic wave crosses " << statistics.elastic_wave_number
                << " of the finest cells in a step, beyond the "
@@ -551,8 +555,8 @@ namespace vefs
                << " up to which the scheme keeps the energy of an "
                   "impact (doc/reliability.md, \"Stiff solids\"); "
                   "shorter steps ('Time/Time step') keep it";
-          warn_once(untrusted_wave_number_said, what.str());
-        }
+          return what.str();
+        });
       statistics.wall_time = wall_time_offset + wall_clock.wall_time();
     }
     {
@@ -599,13 +603,14 @@ namespace vefs
 
   template <int dim>
   void
-  Simulator<dim>::warn_once(bool &said, const std::string &what) const
+  Simulator<dim>::warn_once(bool                               &said,
+                            const std::function<std::string()> &what) const
   {
     if (said)
       return;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       std::cerr << "vefs: warning: step " << time.step()
-                << " (t = " << time.time() << "): " << what << std::endl;
+                << " (t = " << time.time() << "): " << what() << std::endl;
     said = true;
   }
 

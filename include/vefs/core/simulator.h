@@ -21,6 +21,7 @@
 #include <vefs/transport/surface_tracker.h>
 #include <vefs/transport/velocity_source.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -104,12 +105,12 @@ namespace vefs
     report(const LiquidDomain<dim> &domain);
 
     /**
-     * Say @p what on standard error with the step and time, unless @p said
-     * (the warning was given before in this run); set @p said. Collective
-     * only in that every rank keeps @p said the same.
+     * Say what @p what makes on standard error with the step and time,
+     * unless @p said (the warning was given before in this run: the text
+     * is not made again); set @p said. Every rank keeps @p said the same.
      */
     void
-    warn_once(bool &said, const std::string &what) const;
+    warn_once(bool &said, const std::function<std::string()> &what) const;
 
     /**
      * Stop the run at @p step with @p problem: write the current state if
