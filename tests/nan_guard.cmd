@@ -30,8 +30,10 @@ run() {
 run fast_start "subsection Initial liquid" "set Velocity = 1000; 0" "end"
 # The velocity grows past the bound of the CFL number after a few steps.
 run huge_gravity "set Gravity = 0, -1e5"
-# A gravity so large that the Stokes solution overflows.
-run overflowing_gravity "set Gravity = 0, -1e305"
+# A gravity so large that the Stokes solution overflows in a step (the
+# second-order scheme's first solve fails so: solver_not_converging).
+run overflowing_gravity "set Gravity = 0, -1e305" \
+  "subsection Time" "set Scheme = first order" "end"
 # Volume lost without correction, beyond a tight bound.
 run volume_loss "subsection Transport" "set Volume correction = false" "end" \
   "subsection Health check" "set Maximum volume change = 1e-4" "end"

@@ -205,7 +205,19 @@ namespace vefs
         resume();
     }
     LiquidDomain<dim> domain(fields);
-    velocity->start(fields, domain, time.time(), checkpoint.empty());
+    // The second-order scheme's first flow solve (the initial
+    // acceleration) fails like a step's: with the state kept for a look.
+    std::string failure;
+    try
+      {
+        velocity->start(fields, domain, time.time(), checkpoint.empty());
+      }
+    catch (const SolverError &error)
+      {
+        failure = std::string("the initial acceleration: ") + error.what();
+      }
+    if (!failure.empty())
+      stop(time.step(), failure, domain, true);
     // A resumed run has the row of its first step already.
     if (checkpoint.empty())
       report(domain);
@@ -645,8 +657,9 @@ namespace vefs
     if (step > 0)
       message << ". The statistics end with step " << step - 1;
     if (!visualization.last_file().empty())
-      message << ", the visualization with " << parameters.output_directory
-              << "/" << visualization.last_file()
+      message << (step > 0 ? ", the visualization with "
+                           : ". The visualization ends with ")
+              << parameters.output_directory << "/" << visualization.last_file()
               << (state_is_good ? " (the last good state)"
                                 : " (the last finite state)");
     message << ".";
