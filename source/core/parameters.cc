@@ -165,8 +165,7 @@ namespace vefs
       time.max_strain_per_step = regime == Regime::elastic_solid ? 0.25 : 0;
     // The second-order scheme's relaxation has no dumbbell counterpart
     // (doc/dumbbells.md).
-    time.resolve_scheme(regime != Regime::newtonian &&
-                          !transport.velocity_is_prescribed() &&
+    time.resolve_scheme(!transport.velocity_is_prescribed() &&
                           !(material.has_dumbbells() && material.alpha != 0),
                         stress.stress_theta,
                         cavity.has_contact_walls(dimension));

@@ -315,8 +315,10 @@ main()
       out << "new force weight " << value << ", elastic solid: "
           << weight(elastic, "  set New force weight = " + value + "\n")
           << '\n';
-    out << "new force weight 0.5, Newtonian liquid: "
-        << weight("  set Density = 1000\n", "  set New force weight = 0.5\n")
+    out << "new force weight 0.5, first-order scheme: "
+        << weight(elastic,
+                  "  set Scheme = first order\n"
+                  "  set New force weight = 0.5\n")
         << '\n';
   }
 

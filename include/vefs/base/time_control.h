@@ -67,14 +67,16 @@ namespace vefs
     static constexpr double impact_new_force_weight = 0.51;
 
     /**
-     * 'automatic' becomes second order for a material with a stress
-     * (@p has_stress) unless @p stress_theta is below 1, first order
-     * otherwise; the new forces' weight follows the scheme, and in a
+     * 'automatic' becomes second order where the scheme has a second-order
+     * flow step (@p has_second_order_step: the flow is solved, and its
+     * stress law, if any, is one whose relaxation that step integrates: not
+     * dumbbells with alpha != 0) unless @p stress_theta is below 1, first
+     * order otherwise; the new forces' weight follows the scheme, and in a
      * cavity with contact walls (@p has_contact_walls) it damps impacts.
      * Throws InputError for a weight given to the first-order scheme.
      */
     void
-    resolve_scheme(const bool   has_stress,
+    resolve_scheme(const bool   has_second_order_step,
                    const double stress_theta,
                    const bool   has_contact_walls);
   };
