@@ -207,17 +207,13 @@ namespace vefs
     LiquidDomain<dim> domain(fields);
     // The second-order scheme's first flow solve (the initial
     // acceleration) fails like a step's: with the state kept for a look.
-    std::string failure;
-    try
-      {
+    stop_on_solver_error(
+      [&]() {
         velocity->start(fields, domain, time.time(), checkpoint.empty());
-      }
-    catch (const SolverError &error)
-      {
-        failure = std::string("the initial acceleration: ") + error.what();
-      }
-    if (!failure.empty())
-      stop(time.step(), failure, domain, true);
+      },
+      "the initial acceleration: ",
+      domain,
+      true);
     // A resumed run has the row of its first step already.
     if (checkpoint.empty())
       report(domain);
@@ -441,17 +437,11 @@ namespace vefs
   void
   Simulator<dim>::advance_velocity(const LiquidDomain<dim> &domain)
   {
-    std::string failure;
-    try
-      {
-        velocity->advance(fields, domain, time, statistics);
-      }
-    catch (const SolverError &error)
-      {
-        failure = error.what();
-      }
-    if (!failure.empty())
-      stop(time.step(), failure, domain, false);
+    stop_on_solver_error(
+      [&]() { velocity->advance(fields, domain, time, statistics); },
+      "",
+      domain,
+      false);
   }
 
   template <int dim>
@@ -624,6 +614,27 @@ namespace vefs
       std::cerr << "vefs: warning: step " << time.step()
                 << " (t = " << time.time() << "): " << what() << std::endl;
     said = true;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::stop_on_solver_error(const std::function<void()> &solve,
+                                       const std::string           &context,
+                                       const LiquidDomain<dim>     &domain,
+                                       const bool state_is_good)
+  {
+    // stop() throws a SolverError itself: leave the handler first.
+    std::string failure;
+    try
+      {
+        solve();
+      }
+    catch (const SolverError &error)
+      {
+        failure = context + error.what();
+      }
+    if (!failure.empty())
+      stop(time.step(), failure, domain, state_is_good);
   }
 
   template <int dim>

@@ -113,6 +113,16 @@ namespace vefs
     warn_once(bool &said, const std::function<std::string()> &what) const;
 
     /**
+     * Run @p solve; if it throws SolverError, stop() the run at the present
+     * step with its message after @p context.
+     */
+    void
+    stop_on_solver_error(const std::function<void()> &solve,
+                         const std::string           &context,
+                         const LiquidDomain<dim>     &domain,
+                         const bool                   state_is_good);
+
+    /**
      * Stop the run at @p step with @p problem: write the current state if
      * it is finite (@p state_is_good: it passed every check) and throw
      * SolverError naming the step and what was kept.
