@@ -32,10 +32,11 @@ namespace vefs
                     "in 2D and for a prescribed velocity (a falling drop "
                     "keeps its area to 0.2 % instead of 7.8 %, test "
                     "drop_into_pool_2d), linear for a 3D flow (there "
-                    "gradient augmented took 1.1-1.6 times the wall time "
-                    "and was no closer to the 3D dam's reference) and "
-                    "with 'Band placement = predicted, one change'; see "
-                    "doc/transport_in_flows.md.");
+                    "gradient augmented took 1.08-1.63 times the wall "
+                    "time, was no closer to the 3D dam's reference and "
+                    "left the soft 3D ball and beam less of their energy) "
+                    "and with 'Band placement = predicted, one change'; "
+                    "see doc/transport_in_flows.md.");
       add_selection(
         prm,
         "Velocity interpolation",
