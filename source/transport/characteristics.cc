@@ -495,8 +495,8 @@ namespace vefs
     // A cubic that overshoots its nodal values in a cell at a contact wall
     // lays liquid thinner than a cell along the wall, which the contact set
     // then holds: with any unlimited cubic level set the 3D ball's Stokes
-    // solver stopped at its impact (doc/transport_in_flows.md, "The 3D
-    // ball").
+    // solver stopped at its impact (doc/transport_in_flows.md, "What holds
+    // it in flows").
     how.limited_at_contact_walls = &locator;
     std::vector<unsigned int> cubic_components;
     if (interpolation.velocity != VelocityInterpolation::linear)
@@ -544,8 +544,8 @@ namespace vefs
           // wall psi_old is the wall's value, without a normal derivative:
           // carried along, the wall's normal derivative bends the Hermite
           // cubic of the cells at the wall as liquid climbs it (the seed's
-          // soft ball: 16 % more liquid by t = 0.3 s without the volume
-          // correction, 4 % without that derivative;
+          // soft ball: 16.5 % more liquid by t = 0.3 s without the volume
+          // correction, 5.6 % without that derivative;
           // doc/transport_in_flows.md). Beyond a wall the liquid cannot leave,
           // a foot is a trace error and the gradient there extrapolates.
           const Tensor<2, dim> &J = jacobians[i];

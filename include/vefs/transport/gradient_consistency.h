@@ -15,8 +15,7 @@ namespace vefs
    * extension beyond the liquid, the walls, the cut cells), and in thin
    * jets the carried gradient can drift away from the values it belongs to:
    * the Hermite cubic between the nodes then bulges and the advection makes
-   * liquid (doc/transport_in_flows.md, "Why the gradient is held to the
-   * values").
+   * liquid (doc/transport_in_flows.md, "What holds it in flows").
    *
    * At every owned node, the carried gradient g is compared with the
    * gradient r of the Q1 values (the mean of the cells' Q1 gradients around
