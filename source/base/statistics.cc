@@ -209,7 +209,8 @@ namespace vefs
              "liquid over the step (its impulse over the step length); "
              "unsettled_contact_set: 1 where the contact set still changed "
              "after the step's last allowed solve (10), which the step "
-             "keeps.\n"
+             "keeps; stokes_solves: the step's Stokes solves, one per "
+             "contact iteration.\n"
           << column_header() << '\n';
         header_written = true;
       }

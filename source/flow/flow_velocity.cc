@@ -83,6 +83,8 @@ namespace vefs
         statistics.add_column("unsettled_contact_set", [](const auto &s) {
           return s.unsettled_contact_set;
         });
+        statistics.add_column("stokes_solves",
+                              [](const auto &s) { return s.stokes_solves; });
       }
   }
 
@@ -280,13 +282,13 @@ namespace vefs
     const SolveReport solved         = solve_step(fields, time.tau());
     statistics.linear_iterations     = solved.iterations;
     statistics.unsettled_contact_set = solved.contact_set_settled ? 0 : 1;
+    statistics.stokes_solves         = solved.solves;
     if (parameters.energy_budget && flow.has_contact_walls())
       {
         // The fields still hold u*, the solution u.
         TimerOutput::Scope scope(timer, "energy budget");
-        statistics.energy_change_contact = time.tau() *
-                                           parameters.new_force_weight *
-                                           flow.contact_power(fields);
+        statistics.energy_change_contact =
+          time.tau() * parameters.new_force_weight * flow.contact_power(fields);
       }
     update_fields(fields,
                   domain,
@@ -350,6 +352,7 @@ namespace vefs
           changed = flow.update_contact(fields, tau);
         }
         report.contact_set_settled = !changed;
+        report.solves              = solves;
         if (full_solve && (!changed || solves >= max_contact_iterations))
           break;
         if (!changed || solves + 1 >= max_contact_iterations)

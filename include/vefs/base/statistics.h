@@ -129,6 +129,12 @@ namespace vefs
      */
     unsigned int unsettled_contact_set = 0;
     /**
+     * Only with contact walls: the Stokes solves of the step, one per
+     * contact iteration (doc/walls.md, "Contact walls"): what the contact
+     * set costs.
+     */
+    unsigned int stokes_solves = 0;
+    /**
      * The walls' reaction in the momentum equation of the step (ContactWalls:
      * the force at the end of the step); kept for the next step's mean.
      */

@@ -76,6 +76,8 @@ namespace vefs
       unsigned int iterations = 0;
       /** Whether the last update left the contact set unchanged. */
       bool contact_set_settled = true;
+      /** Solves, one per contact iteration. */
+      unsigned int solves = 0;
     };
 
     /**
