@@ -181,6 +181,7 @@ namespace vefs
                       stiff_solid_under_gravity,
                       dimension);
     solver.resolve(stiff_solid_under_gravity);
+    stress.resolve_nodal_stress(stiff_solid_under_gravity);
     flow.resolve(regime, material.has_dumbbells(), stiff_solid_under_gravity);
   }
 
@@ -232,6 +233,11 @@ namespace vefs
             "'local' scales the strain down in the exponential stress update "
             "only: it needs 'Stress/Stress update = exponential' and a "
             "positive 'Time/Maximum strain per step'");
+    require(!material.has_dumbbells() ||
+              stress.nodal_stress == NodalStress::vertex_average,
+            "Stress/Nodal stress",
+            "the dumbbells' fields reach the nodes by the vertex average only: "
+            "use 'vertex average' or 'automatic'");
     require(!mesh.band_predicted() || transport.remap_distance == 0,
             "Mesh refinement/Band placement",
             "'predicted' adapts the mesh before every advection; between "

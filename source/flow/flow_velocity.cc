@@ -420,7 +420,8 @@ namespace vefs
                             domain,
                             rheology,
                             tau,
-                            parameters.flow.extends_outside_stress());
+                            parameters.flow.extends_outside_stress(),
+                            parameters.stress.nodal_stress);
         statistics.max_velocity_gradient = report.max_velocity_gradient;
         statistics.strain_limited_points = report.strain_limited_points;
       }

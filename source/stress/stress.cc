@@ -148,6 +148,69 @@ namespace vefs
       fields.finalize();
     }
 
+    /**
+     * The increment sigma(sigma*_q, L_q) - sigma*_q of the update at the
+     * quadrature points of each liquid cell's liquid part (sigma* the Q1
+     * interpolant of the nodes, L_q the traceless Q1 velocity gradient),
+     * summed into @p increment as the integrals against the shape
+     * functions, whose own integrals over the liquid go into the node's
+     * first component: the lumped L2 projection of the increment. These
+     * are the points where the flow step did work against the stress, so
+     * that the nodes gain nearly the work the flow step saw
+     * (doc/bouncing_ball.md, "Energy budget").
+     */
+    template <int dim>
+    void
+    lump_increment(const TransportedFields<dim>                      &fields,
+                   const typename TransportedFields<dim>::VectorType &velocity,
+                   const LiquidDomain<dim>                           &domain,
+                   const Rheology<dim>                               &rheology,
+                   const double                                       tau,
+                   typename TransportedFields<dim>::VectorType       &increment)
+    {
+      constexpr unsigned int first =
+        TransportedFields<dim>::first_stress_component;
+      constexpr unsigned int n_stress =
+        TransportedFields<dim>::n_stress_components;
+      fields.initialize_vector(increment);
+      LiquidValues<dim> liquid_values(domain);
+      std::array<SymmetricTensor<2, dim>, GeometryInfo<dim>::vertices_per_cell>
+        vertex_sigma;
+      std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
+      for (const auto &cell : fields.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && domain.has_liquid(cell))
+          {
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                vertex_sigma[v] = fields.stress_at(cell, v);
+                for (unsigned int d = 0; d < dim; ++d)
+                  vertex_u[v][d] = fields.entry_at(velocity, cell, v, d);
+              }
+            const BoxCellValues<dim> &values = liquid_values.reinit(cell);
+            for (unsigned int q = 0; q < values.size(); ++q)
+              {
+                Tensor<2, dim> L;
+                for (const unsigned int v : cell->vertex_indices())
+                  for (unsigned int d = 0; d < dim; ++d)
+                    L[d] += vertex_u[v][d] * values.gradient[q][v];
+                const SymmetricTensor<2, dim> advected =
+                  values.value(vertex_sigma, q);
+                const SymmetricTensor<2, dim> change =
+                  rheology.updated_stress(advected, traceless(L), tau) -
+                  advected;
+                for (const unsigned int v : cell->vertex_indices())
+                  {
+                    const double weight = values.shape[q][v] * values.JxW[q];
+                    fields.entry_at(increment, cell, v, 0) += weight;
+                    for (unsigned int i = 0; i < n_stress; ++i)
+                      fields.entry_at(increment, cell, v, first + i) +=
+                        weight * change.access_raw_entry(i);
+                  }
+              }
+          }
+      increment.compress(VectorOperation::add);
+    }
+
   } // namespace
 
   template <int dim>
@@ -243,13 +306,22 @@ namespace vefs
                 const LiquidDomain<dim>                           &domain,
                 const Rheology<dim>                               &rheology,
                 const double                                       tau,
-                const bool outside_extended)
+                const bool        outside_extended,
+                const NodalStress nodal_stress)
   {
     using VectorType = typename TransportedFields<dim>::VectorType;
     constexpr unsigned int first =
       TransportedFields<dim>::first_stress_component;
     constexpr unsigned int n_stress =
       TransportedFields<dim>::n_stress_components;
+
+    Assert(nodal_stress != NodalStress::automatic,
+           ExcMessage("StressParameters::resolve_nodal_stress() first."));
+    // Read before the nodes change.
+    const bool lumped = nodal_stress == NodalStress::lumped_increment;
+    VectorType increment;
+    if (lumped)
+      lump_increment(fields, velocity, domain, rheology, tau, increment);
 
     // Sum over the liquid cells around each node of volume * new stress;
     // the volume itself goes into the node's first component.
@@ -280,6 +352,18 @@ namespace vefs
             SymmetricTensor<2, dim> sigma;
             for (unsigned int i = 0; i < n_stress; ++i)
               sigma.access_raw_entry(i) = sum(node.dofs[first + i]) / weight;
+            if (lumped && increment(node.dofs[0]) > 0)
+              {
+                // The lumping mixes the increments of neighbouring points
+                // and so may overshoot where the average does not.
+                SymmetricTensor<2, dim> lumped_sigma = fields.stress(node);
+                for (unsigned int i = 0; i < n_stress; ++i)
+                  lumped_sigma.access_raw_entry(i) +=
+                    increment(node.dofs[first + i]) / increment(node.dofs[0]);
+                if (smallest_eigenvalue(rheology.conformation(lumped_sigma)) >=
+                    0.5 * smallest_eigenvalue(rheology.conformation(sigma)))
+                  sigma = lumped_sigma;
+              }
             fields.set_stress(node, sigma);
           }
       }
@@ -392,14 +476,16 @@ namespace vefs
                    const LiquidDomain<2> &,
                    const Rheology<2> &,
                    const double,
-                   const bool);
+                   const bool,
+                   const NodalStress);
   template StressUpdateReport
   update_stress<3>(TransportedFields<3> &,
                    const TransportedFields<3>::VectorType &,
                    const LiquidDomain<3> &,
                    const Rheology<3> &,
                    const double,
-                   const bool);
+                   const bool,
+                   const NodalStress);
   template StressUpdateReport
   for_each_liquid_vertex<2>(
     const TransportedFields<2> &,

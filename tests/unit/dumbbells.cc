@@ -227,7 +227,8 @@ namespace
                         macroscopic_domain,
                         elastic,
                         tau,
-                        true);
+                        true,
+                        vefs::NodalStress::vertex_average);
 
     std::set<types::global_dof_index> liquid_nodes;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())

@@ -357,8 +357,9 @@ main()
     // 'Solver/Pressure stabilization = automatic': 0.05 for an elastic
     // solid with the macroscopic stress, the second-order scheme and that
     // weight strain (whatever the band), 0.25 otherwise; 'Flow/Outside
-    // velocity of cut cells = automatic' extension and solution by the same
-    // rule. An explicit value stays.
+    // velocity of cut cells = automatic' extension and solution, 'Stress/
+    // Nodal stress = automatic' lumped increment and vertex average by the
+    // same rule. An explicit value stays.
     const auto velocity_interpolation = [](const std::string &top,
                                            const std::string &material,
                                            const std::string &time,
@@ -389,7 +390,12 @@ main()
               : parameters.flow.resolved_outside_velocity() ==
                   vefs::OutsideVelocity::extension
                 ? "extension"
-                : "solution");
+                : "solution") +
+             ", nodal stress " +
+             (parameters.stress.nodal_stress ==
+                  vefs::NodalStress::lumped_increment
+                ? "lumped increment"
+                : "vertex average");
     };
     // G = eta_p / lambda; with the defaults rho = 1000, g = 9.81 and the
     // cavity 0.28575 m wide the weight strain is 0.467 at G = 2000 Pa,

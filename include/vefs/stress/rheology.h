@@ -36,6 +36,20 @@ namespace vefs
   };
 
   /**
+   * How the updated stress reaches the nodes, where the characteristics
+   * read it: update_stress().
+   */
+  enum class NodalStress
+  {
+    /** Resolved by StressParameters::resolve_nodal_stress(). */
+    automatic,
+    /** Each liquid cell updates its vertices, the node takes the mean. */
+    vertex_average,
+    /** The update's increment at the liquid's quadrature points, lumped. */
+    lumped_increment
+  };
+
+  /**
    * What carries the polymer stress (doc/dumbbells.md): the constitutive
    * law itself, or an ensemble of Hookean dumbbells as Brownian
    * configuration fields.
@@ -122,9 +136,21 @@ namespace vefs
     void
     resolve();
 
+    /**
+     * 'Nodal stress' automatic becomes the lumped increment for an elastic
+     * solid that holds its shape under its weight (@p stiff_solid), whose
+     * impacts lose less energy by it, and the vertex average otherwise: a
+     * soft solid's sheets a few cells thick lose more by the lumping
+     * (doc/bouncing_ball.md, "Energy budget"), and a liquid's relaxation
+     * would be smoothed as well.
+     */
+    void
+    resolve_nodal_stress(const bool stiff_solid);
+
     StressUpdate stress_update = StressUpdate::automatic;
     /** Weight of the new velocity in the stress of the diffusion step. */
-    double stress_theta = 1;
+    double      stress_theta = 1;
+    NodalStress nodal_stress = NodalStress::automatic;
   };
 
   /**

@@ -72,9 +72,13 @@ namespace vefs
    * vertices by the mean gradient over its liquid part (the gradient the
    * flow step's stress term sees). The nodal value is the cell-volume
    * weighted average of these, so that a liquid at rest keeps its stress
-   * exactly. A node outside the liquid may then carry at most a bounded
-   * multiple of the stretch of its cells' liquid nodes (stress.cc), unless
-   * @p outside_extended: the extension then overwrites those nodes. Other
+   * exactly; with NodalStress::lumped_increment, sigma* plus the lumped
+   * increment of the update at the quadrature points of the liquid, unless
+   * that leaves the conformation tensor less than half as positive as the
+   * average does (stress.cc). A node outside the liquid may then carry at
+   * most a bounded multiple of the stretch of its cells' liquid nodes
+   * (stress.cc), unless @p outside_extended: the extension then overwrites
+   * those nodes. Other
    * nodes keep their values (the extension overwrites them). The velocity
    * gradient is taken from @p velocity, a vector with the layout of the
    * fields: the fields themselves, or theta u + (1 - theta) u* for 'Stress
@@ -88,7 +92,8 @@ namespace vefs
                 const LiquidDomain<dim>                           &domain,
                 const Rheology<dim>                               &rheology,
                 const double                                       tau,
-                const bool outside_extended);
+                const bool        outside_extended,
+                const NodalStress nodal_stress);
 
   /** What the statistics report of the stress. */
   struct StressMeasure
