@@ -171,7 +171,8 @@ namespace vefs
                         cavity.has_contact_walls(dimension));
     // Cubic interpolation at the feet keeps the elastic waves of a solid
     // that holds its shape under its weight; a soft one pays for it in steps
-    // and solves (doc/bouncing_ball.md, "The interpolation at the feet").
+    // and solves (doc/bouncing_ball.md, "What `automatic` gives a stiff
+    // solid").
     const double strain = weight_strain();
     const bool   stiff_solid_under_gravity =
       regime == Regime::elastic_solid && !material.has_dumbbells() &&

@@ -101,7 +101,7 @@ namespace vefs
        * difference enters a = (u - u*) / (w tau) - ((1 - w) / w) a*, whose
        * factor -(1 - w) / w = -0.96 it pushes beyond -1 for an alternating
        * mode: the stiff beam at rest grew such a mode from t = 2.2 s
-       * (doc/bouncing_ball.md, "The interpolation at the feet").
+       * (doc/bouncing_ball.md, "What `automatic` gives a stiff solid").
        */
       const FieldHermite<dim>  *velocity_hermite = nullptr;
       bool                      velocity_limited = false;
