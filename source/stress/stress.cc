@@ -149,6 +149,54 @@ namespace vefs
     }
 
     /**
+     * Calls @p visit for each quadrature point q of the liquid part of each
+     * locally owned liquid cell with the cell's values there, sigma*_q (the
+     * Q1 interpolant of the nodal stress) and the update of sigma*_q by the
+     * traceless Q1 gradient L_q of @p velocity: the stress update at the
+     * points where the flow step does work against the stress.
+     */
+    template <int dim, typename Visitor>
+    void
+    for_each_liquid_point(
+      const TransportedFields<dim>                      &fields,
+      const typename TransportedFields<dim>::VectorType &velocity,
+      const LiquidDomain<dim>                           &domain,
+      const Rheology<dim>                               &rheology,
+      const double                                       tau,
+      const Visitor                                     &visit)
+    {
+      LiquidValues<dim> liquid_values(domain);
+      std::array<SymmetricTensor<2, dim>, GeometryInfo<dim>::vertices_per_cell>
+        vertex_sigma;
+      std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
+      for (const auto &cell : fields.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && domain.has_liquid(cell))
+          {
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                vertex_sigma[v] = fields.stress_at(cell, v);
+                for (unsigned int d = 0; d < dim; ++d)
+                  vertex_u[v][d] = fields.entry_at(velocity, cell, v, d);
+              }
+            const BoxCellValues<dim> &values = liquid_values.reinit(cell);
+            for (unsigned int q = 0; q < values.size(); ++q)
+              {
+                Tensor<2, dim> L;
+                for (const unsigned int v : cell->vertex_indices())
+                  for (unsigned int d = 0; d < dim; ++d)
+                    L[d] += vertex_u[v][d] * values.gradient[q][v];
+                const SymmetricTensor<2, dim> advected =
+                  values.value(vertex_sigma, q);
+                visit(cell,
+                      values,
+                      q,
+                      advected,
+                      rheology.updated_stress(advected, traceless(L), tau));
+              }
+          }
+    }
+
+    /**
      * The increment sigma(sigma*_q, L_q) - sigma*_q of the update at the
      * quadrature points of each liquid cell's liquid part (sigma* the Q1
      * interpolant of the nodes, L_q the traceless Q1 velocity gradient),
@@ -177,41 +225,27 @@ namespace vefs
       constexpr unsigned int n_stress =
         TransportedFields<dim>::n_stress_components;
       fields.initialize_vector(increment);
-      LiquidValues<dim> liquid_values(domain);
-      std::array<SymmetricTensor<2, dim>, GeometryInfo<dim>::vertices_per_cell>
-        vertex_sigma;
-      std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
-      for (const auto &cell : fields.dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned() && domain.has_liquid(cell))
-          {
-            for (const unsigned int v : cell->vertex_indices())
-              {
-                vertex_sigma[v] = fields.stress_at(cell, v);
-                for (unsigned int d = 0; d < dim; ++d)
-                  vertex_u[v][d] = fields.entry_at(velocity, cell, v, d);
-              }
-            const BoxCellValues<dim> &values = liquid_values.reinit(cell);
-            for (unsigned int q = 0; q < values.size(); ++q)
-              {
-                Tensor<2, dim> L;
-                for (const unsigned int v : cell->vertex_indices())
-                  for (unsigned int d = 0; d < dim; ++d)
-                    L[d] += vertex_u[v][d] * values.gradient[q][v];
-                const SymmetricTensor<2, dim> advected =
-                  values.value(vertex_sigma, q);
-                const SymmetricTensor<2, dim> change =
-                  rheology.updated_stress(advected, traceless(L), tau) -
-                  advected;
-                for (const unsigned int v : cell->vertex_indices())
-                  {
-                    const double weight = values.shape[q][v] * values.JxW[q];
-                    fields.entry_at(increment, cell, v, 0) += weight;
-                    for (unsigned int i = 0; i < n_stress; ++i)
-                      fields.entry_at(increment, cell, v, first + i) +=
-                        weight * change.access_raw_entry(i);
-                  }
-              }
-          }
+      for_each_liquid_point(
+        fields,
+        velocity,
+        domain,
+        rheology,
+        tau,
+        [&](const auto                    &cell,
+            const BoxCellValues<dim>      &values,
+            const unsigned int             q,
+            const SymmetricTensor<2, dim> &advected,
+            const SymmetricTensor<2, dim> &updated) {
+          const SymmetricTensor<2, dim> change = updated - advected;
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const double weight = values.shape[q][v] * values.JxW[q];
+              fields.entry_at(increment, cell, v, 0) += weight;
+              for (unsigned int i = 0; i < n_stress; ++i)
+                fields.entry_at(increment, cell, v, first + i) +=
+                  weight * change.access_raw_entry(i);
+            }
+        });
       increment.compress(VectorOperation::add);
     }
 
@@ -386,34 +420,20 @@ namespace vefs
     const Rheology<dim>                               &rheology,
     const double                                       tau)
   {
-    LiquidValues<dim> liquid_values(domain);
-    std::array<SymmetricTensor<2, dim>, GeometryInfo<dim>::vertices_per_cell>
-      vertex_sigma;
-    std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> vertex_u;
-    double                                                           energy = 0;
-    for (const auto &cell : fields.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && domain.has_liquid(cell))
-        {
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              vertex_sigma[v] = fields.stress_at(cell, v);
-              for (unsigned int d = 0; d < dim; ++d)
-                vertex_u[v][d] = fields.entry_at(velocity, cell, v, d);
-            }
-          const BoxCellValues<dim> &values = liquid_values.reinit(cell);
-          for (unsigned int q = 0; q < values.size(); ++q)
-            {
-              Tensor<2, dim> L;
-              for (const unsigned int v : cell->vertex_indices())
-                for (unsigned int d = 0; d < dim; ++d)
-                  L[d] += vertex_u[v][d] * values.gradient[q][v];
-              const SymmetricTensor<2, dim> sigma =
-                rheology.updated_stress(values.value(vertex_sigma, q),
-                                        traceless(L),
-                                        tau);
-              energy += rheology.elastic_energy_density(sigma) * values.JxW[q];
-            }
-        }
+    double energy = 0;
+    for_each_liquid_point(fields,
+                          velocity,
+                          domain,
+                          rheology,
+                          tau,
+                          [&](const auto &,
+                              const BoxCellValues<dim> &values,
+                              const unsigned int        q,
+                              const SymmetricTensor<2, dim> &,
+                              const SymmetricTensor<2, dim> &updated) {
+                            energy += rheology.elastic_energy_density(updated) *
+                                      values.JxW[q];
+                          });
     return Utilities::MPI::sum(
       energy,
       fields.dof_handler.get_triangulation().get_communicator());
