@@ -120,8 +120,12 @@ namespace vefs
         "L1 0.0155 with 14, 0.0172 with 10, for 1.5 times the CPU time; at "
         "1/64 0.039 with 14, 0.106 with 16); 0 otherwise: with "
         "the linear level set the volume correction then misses at remap "
-        "steps, in flows a remap has not been measured to pay, and both "
-        "predicted band placements adapt the mesh at every step.");
+        "steps; in flows the mesh, adapted at remaps only, carries a band "
+        "R cells wide for the flow too (R = 20: the 2D flow tests took "
+        "1.5-3.4 times the CPU time, the stiff ball's Stokes solver "
+        "stopped at the impact, the oscillating beam's energy rose; "
+        "doc/transport_in_flows.md); and both predicted band placements "
+        "adapt the mesh at every step.");
       prm.add_parameter("Redistancing interval",
                         redistancing_interval,
                         "Every this many steps, make the level set a signed "
