@@ -3,11 +3,14 @@
 flow test scene run with both values of 'Transport/Level set interpolation'
 (linear and gradient augmented), the two runs side by side (two processes
 of one rank each, so that their wall times are taken at the same load), and
-each run checked by the test's own checker (tests/<scene>.py).
+each run checked by the test's own checker (tests/<scene>.py). --entry and
+--values compare two values of another entry instead (doc/transport_in_flows.md:
+'Transport/Remap distance' 0 and 20, with --set for the interpolation).
 
 Usage (from anywhere):
   /usr/bin/python3 benchmarks/level_set_in_flows.py [--vefs build/vefs]
       [--scenes broken_dam_2d drop_into_pool_2d ...]
+      [--entry 'Transport/Level set interpolation'] [--values linear 'gradient augmented']
       [--results-dir benchmarks/results/level_set_in_flows]
       [--output benchmarks/results/level_set_in_flows.md] [--no-run]
 
@@ -31,12 +34,13 @@ SCENES = ["broken_dam_2d", "broken_dam_2d_large_steps", "drop_into_pool_2d",
           "standing_wave_2d", "bouncing_ball_2d_stiff",
           "bouncing_ball_2d_soft", "oscillating_beam_2d",
           "clamped_beam_at_rest"]
+ENTRY = "Transport/Level set interpolation"
 PAIR = ["linear", "gradient augmented"]
 
 
-def run_name(scene, interpolation):
+def run_name(scene, value):
     """The name of a run's files in the results directory."""
-    return "%s_%s" % (scene, interpolation.replace(" ", "_"))
+    return "%s_%s" % (scene, value.replace(" ", "_"))
 
 
 def run_and_record(vefs, results, name):
@@ -48,16 +52,17 @@ def run_and_record(vefs, results, name):
         f.write("%g %g %d" % (run.wall, run.cpu, run.returncode))
 
 
-def run_pair(vefs, results, scene, pair, settings):
-    """Both runs of `scene` at once (two threads, each waiting for its own
-    vefs process)."""
+def run_pair(vefs, results, scene, entry, pair, settings):
+    """Both runs of `scene` at once, `entry` (SECTION/NAME) set to each
+    value of `pair` (two threads, each waiting for its own vefs process)."""
     with open(os.path.join(ROOT, "tests", scene + ".prm")) as f:
         text = f.read()
+    *path, entry_name = entry.split("/")
     names = []
-    for interpolation in pair:
-        name = run_name(scene, interpolation)
+    for value in pair:
+        name = run_name(scene, value)
         prm = apply_settings(set_entry(set_entry(
-            text, ["Transport"], "Level set interpolation", interpolation),
+            text, path, entry_name, value),
             [], "Output directory", os.path.join(results, name)), settings)
         with open(os.path.join(results, name + ".prm"), "w") as f:
             f.write(prm)
@@ -68,9 +73,9 @@ def run_pair(vefs, results, scene, pair, settings):
             done.result()
 
 
-def checked(results, scene, interpolation):
+def checked(results, scene, value):
     """(wall time, CPU time, returncode, checker lines) of one run."""
-    name = run_name(scene, interpolation)
+    name = run_name(scene, value)
     with open(os.path.join(results, name + ".wall")) as f:
         wall, cpu, code = f.read().split()
     checker = subprocess.run(
@@ -90,19 +95,24 @@ def main():
     add_study_arguments(parser, "level_set_in_flows",
                         "level_set_in_flows.md")
     parser.add_argument("--scenes", nargs="+", default=SCENES)
+    parser.add_argument("--entry", default=ENTRY,
+                        help="the entry compared, SECTION/NAME")
+    parser.add_argument("--values", nargs=2, default=PAIR,
+                        help="its two values")
     args = parser.parse_args()
     os.makedirs(args.results_dir, exist_ok=True)
     if not args.no_run:
         for scene in args.scenes:
-            run_pair(args.vefs, args.results_dir, scene, PAIR, args.set)
+            run_pair(args.vefs, args.results_dir, scene, args.entry,
+                     args.values, args.set)
             print(scene, "done", flush=True)
-    first, second = PAIR
-    lines = ["# The level set interpolation in the 2D flow tests", "",
+    first, second = args.values
+    lines = ["# '%s' in the 2D flow tests" % args.entry, "",
              "%s / %s, run side by side on one rank each (%s)." % (
                  first, second, args.vefs), ""]
     for scene in args.scenes:
         (wall_l, cpu_l, code_l, out_l), (wall_g, cpu_g, code_g, out_g) = [
-            checked(args.results_dir, scene, i) for i in PAIR]
+            checked(args.results_dir, scene, i) for i in args.values]
         lines.append("## %s: wall time %.1f / %.1f s, CPU time %.1f / %.1f s "
                      "(ratio %.2f)%s" % (
             scene, wall_l, wall_g, cpu_l, cpu_g, cpu_g / cpu_l,
