@@ -4,8 +4,8 @@ flow test scene run with both values of 'Transport/Level set interpolation'
 (linear and gradient augmented), the two runs side by side (two processes
 of one rank each, so that their wall times are taken at the same load), and
 each run checked by the test's own checker (tests/<scene>.py). --entry and
---values compare two values of another entry instead (doc/transport_in_flows.md:
-'Transport/Remap distance' 0 and 20, with --set for the interpolation).
+--values compare two values of another entry instead ('Transport/Remap
+distance' 0 and 20 in doc/transport_in_flows.md).
 
 Usage (from anywhere):
   /usr/bin/python3 benchmarks/level_set_in_flows.py [--vefs build/vefs]
