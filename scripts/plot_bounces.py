@@ -26,9 +26,7 @@ def main(png, runs):
         t = s["time"]
         three_d = "centroid_z" in s
         per = "" if three_d else "/m"
-        energy = [k + p + e for k, p, e in zip(s["kinetic_energy"],
-                                               s["potential_energy"],
-                                               s["elastic_energy"])]
+        energy = s["total_energy"]
         axes[0].plot(t, s["centroid_z" if three_d else "centroid_y"],
                      label=label)
         axes[1].plot(t, s["contact_force"], label=label)

@@ -78,8 +78,8 @@ namespace vefs
    * average does (stress.cc). A node outside the liquid may then carry at
    * most a bounded multiple of the stretch of its cells' liquid nodes
    * (stress.cc), unless @p outside_extended: the extension then overwrites
-   * those nodes. Other
-   * nodes keep their values (the extension overwrites them). The velocity
+   * those nodes. Other nodes keep their values (the extension overwrites
+   * them). The velocity
    * gradient is taken from @p velocity, a vector with the layout of the
    * fields: the fields themselves, or theta u + (1 - theta) u* for 'Stress
    * theta' < 1. Returns the largest velocity gradient it met and how often
