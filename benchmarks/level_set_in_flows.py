@@ -111,15 +111,15 @@ def main():
              "%s / %s, run side by side on one rank each (%s)." % (
                  first, second, args.vefs), ""]
     for scene in args.scenes:
-        (wall_l, cpu_l, code_l, out_l), (wall_g, cpu_g, code_g, out_g) = [
-            checked(args.results_dir, scene, i) for i in args.values]
+        (wall_1, cpu_1, code_1, out_1), (wall_2, cpu_2, code_2, out_2) = [
+            checked(args.results_dir, scene, v) for v in args.values]
         lines.append("## %s: wall time %.1f / %.1f s, CPU time %.1f / %.1f s "
                      "(ratio %.2f)%s" % (
-            scene, wall_l, wall_g, cpu_l, cpu_g, cpu_g / cpu_l,
-            "" if code_l == code_g == 0 else
-            ", exit codes %d / %d" % (code_l, code_g)))
+            scene, wall_1, wall_2, cpu_1, cpu_2, cpu_2 / cpu_1,
+            "" if code_1 == code_2 == 0 else
+            ", exit codes %d / %d" % (code_1, code_2)))
         lines.append("")
-        for a, b in zip(out_l, out_g):
+        for a, b in zip(out_1, out_2):
             if a != b:
                 lines += ["- %s: %s" % (first, a), "- %s: %s" % (second, b)]
         lines.append("")

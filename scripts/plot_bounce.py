@@ -15,7 +15,7 @@ import sys
 import matplotlib
 
 from vefs_tools.energy_budget import step_shares
-from vefs_tools.statistics import read_statistics
+from vefs_tools.statistics import height_and_depth_unit, read_statistics
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -24,13 +24,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 def main(output_dir, png):
     s = read_statistics(output_dir)
     t = s["time"]
-    three_d = "centroid_z" in s
-    per = "" if three_d else "/m"   # 2D quantities are per metre of depth
+    height, per = height_and_depth_unit(s)
+    three_d = height == "centroid_z"
     contact = ("contact area (m^2)" if three_d else "contact length (m)")
     budget = "energy_change_transport" in s
     fig, axes = plt.subplots(1, 4 if budget else 3,
                              figsize=(17 if budget else 13, 3.8))
-    axes[0].plot(t, s["centroid_z" if three_d else "centroid_y"])
+    axes[0].plot(t, s[height])
     axes[0].set_ylabel("centroid height (m)")
     axes[1].plot(t, s["contact_force"])
     ax = axes[1].twinx()

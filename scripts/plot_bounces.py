@@ -12,7 +12,7 @@ import sys
 
 import matplotlib
 
-from vefs_tools.statistics import read_statistics
+from vefs_tools.statistics import height_and_depth_unit, read_statistics
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -20,15 +20,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 def main(png, runs):
     fig, axes = plt.subplots(1, 3, figsize=(14, 3.8))
-    per = "/m"
     for label, directory in runs:
         s = read_statistics(directory)
         t = s["time"]
-        three_d = "centroid_z" in s
-        per = "" if three_d else "/m"
+        height, per = height_and_depth_unit(s)
         energy = s["total_energy"]
-        axes[0].plot(t, s["centroid_z" if three_d else "centroid_y"],
-                     label=label)
+        axes[0].plot(t, s[height], label=label)
         axes[1].plot(t, s["contact_force"], label=label)
         axes[2].plot(t, [e / energy[0] for e in energy], label=label)
     axes[0].set_ylabel("centroid height (m)")

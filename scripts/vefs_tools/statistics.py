@@ -31,6 +31,10 @@ parabolic_vertex(p0, p1, p2)
 zero_crossings(ts, ys)
     Times where ys(ts) changes sign, by linear interpolation between rows.
 
+height_and_depth_unit(statistics)
+    The column of the centroid's height and the unit suffix of 2D
+    quantities: ("centroid_z", "") for a 3D run, ("centroid_y", "/m") in 2D.
+
 ``python3 -m vefs_tools.statistics DIR...`` (from scripts/) lists the
 columns of runs.
 """
@@ -41,7 +45,7 @@ import os
 
 __all__ = ["read_statistics", "read_csv_reference", "interpolate",
            "column", "statistics_path", "parabolic_vertex", "zero_crossings",
-           "largest_difference", "halving_order"]
+           "largest_difference", "halving_order", "height_and_depth_unit"]
 
 
 def statistics_path(path_or_dir):
@@ -239,6 +243,15 @@ def zero_crossings(ts, ys):
             result.append((t, 1 if y > 0 else -1))
         last = i
     return result
+
+
+
+def height_and_depth_unit(statistics):
+    """("centroid_z", "") for a 3D run, ("centroid_y", "/m") in 2D, where
+    forces and energies are per metre of depth."""
+    if "centroid_z" in statistics:
+        return "centroid_z", ""
+    return "centroid_y", "/m"
 
 
 if __name__ == "__main__":

@@ -79,11 +79,10 @@ namespace vefs
    * most a bounded multiple of the stretch of its cells' liquid nodes
    * (stress.cc), unless @p outside_extended: the extension then overwrites
    * those nodes. Other nodes keep their values (the extension overwrites
-   * them). The velocity
-   * gradient is taken from @p velocity, a vector with the layout of the
-   * fields: the fields themselves, or theta u + (1 - theta) u* for 'Stress
-   * theta' < 1. Returns the largest velocity gradient it met and how often
-   * the strain limiter acted.
+   * them). The velocity gradient is taken from @p velocity, a vector with
+   * the layout of the fields: the fields themselves, or theta u + (1 -
+   * theta) u* for 'Stress theta' < 1. Returns the largest velocity gradient
+   * it met and how often the strain limiter acted.
    */
   template <int dim>
   StressUpdateReport
