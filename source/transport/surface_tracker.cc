@@ -1,6 +1,6 @@
-#include <vefs/transport/free_surface.h>
 #include <vefs/transport/redistancing.h>
 #include <vefs/transport/surface_tracker.h>
+#include <vefs/transport/volume_correction.h>
 
 #include <algorithm>
 

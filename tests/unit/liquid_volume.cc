@@ -18,7 +18,7 @@
 //   full cells' faces: the wet measure of each side and its moment of the
 //   last coordinate (which a face rule with its coordinates in the wrong
 //   order would miss) against the exact ones, relative error below 1e-12.
-// - correct_volume() (free_surface.h), Newton's method on a constant added
+// - correct_volume() (volume_correction.h), Newton's method on a constant added
 //   to psi: for the plane the shift that moves it by a given distance,
 //   exactly (1e-12), and for all shapes the target volume to 1e-12.
 // 1 and 2 ranks (the sums run over the owned cells of each rank).
@@ -32,8 +32,8 @@
 #include <deal.II/distributed/tria.h>
 
 #include <vefs/compat/box_q1_values.h>
-#include <vefs/transport/free_surface.h>
 #include <vefs/transport/liquid_domain.h>
+#include <vefs/transport/volume_correction.h>
 
 #include <iostream>
 

@@ -1,4 +1,4 @@
-// correct_volume() (free_surface.h): one constant added to the level set
+// correct_volume() (volume_correction.h): one constant added to the level set
 // so that the sharp liquid volume of the flow step (sharp_liquid_volume())
 // is the target. Uniform meshes of the unit square (cube), h = 1/32 (1/16
 // in 3D), 1 and 2 ranks.
@@ -23,8 +23,8 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/grid/grid_generator.h>
 
-#include <vefs/transport/free_surface.h>
 #include <vefs/transport/liquid_domain.h>
+#include <vefs/transport/volume_correction.h>
 
 #include <cmath>
 #include <functional>

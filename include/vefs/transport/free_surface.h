@@ -6,16 +6,6 @@
 namespace vefs
 {
   /**
-   * Restore the liquid volume @p target, as the flow step measures it
-   * (sharp_liquid_volume()), by adding one constant to psi,
-   * i.e. by moving the whole free surface along its normal by the same
-   * small distance. Returns that distance.
-   */
-  template <int dim>
-  double
-  correct_volume(TransportedFields<dim> &fields, const double target);
-
-  /**
    * L1 error of the liquid region, int |phi - phi_exact|, with phi_exact the
    * indicator of @p exact_level_set < 0 (assumed 1-Lipschitz, like a
    * distance) and both indicators sharp.
