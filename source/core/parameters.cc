@@ -239,6 +239,12 @@ namespace vefs
             "Stress/Nodal stress",
             "the dumbbells' fields reach the nodes by the vertex average only: "
             "use 'vertex average' or 'automatic'");
+    require(transport.volume_correction_shift == ShiftWeight::uniform ||
+              transport.remap_distance == 0,
+            "Transport/Volume correction shift",
+            "'surface speed' moves the level set by a field, which the "
+            "characteristics between remaps do not carry: it needs "
+            "'Transport/Remap distance = 0' (the default of flows)");
     require(!mesh.band_predicted() || transport.remap_distance == 0,
             "Mesh refinement/Band placement",
             "'predicted' adapts the mesh before every advection; between "

@@ -110,9 +110,12 @@ namespace vefs
     public:
       using Location = typename LiquidDomain<dim>::Location;
 
-      CellCutter(const TransportedFields<dim> &fields, const double shift)
+      CellCutter(const TransportedFields<dim>                      &fields,
+                 const double                                       shift,
+                 const typename TransportedFields<dim>::VectorType *weight)
         : fields(fields)
         , shift(shift)
+        , weight(weight)
         , gauss_rule(QGauss<1>(LiquidDomain<dim>::n_gauss_points))
         , generator(gauss_rule,
                     NonMatching::AdditionalQGeneratorData(max_box_splits))
@@ -132,7 +135,14 @@ namespace vefs
         double highest = -lowest;
         for (const unsigned int v : cell->vertex_indices())
           {
-            values[v] = fields.level_set_at(cell, v) + shift;
+            weights[v] =
+              weight
+                ? fields.entry_at(*weight,
+                                  cell,
+                                  v,
+                                  TransportedFields<dim>::level_set_component)
+                : 1.;
+            values[v] = fields.level_set_at(cell, v) + shift * weights[v];
             lowest    = std::min(lowest, values[v]);
             highest   = std::max(highest, values[v]);
           }
@@ -198,6 +208,23 @@ namespace vefs
           ReferenceCells::get_hypercube<dim>(),
           face_generator.get_inside_quadrature(),
           f);
+      }
+
+      /** The weight of the shift in the cut cell, for the quadratures'
+       * points. */
+      CellLevelSet<dim>
+      shift_weight() const
+      {
+        return CellLevelSet<dim>(weights);
+      }
+
+      double
+      mean_shift_weight() const
+      {
+        double sum = 0;
+        for (const double w : weights)
+          sum += w;
+        return sum / weights.size();
       }
 
       /** The cut cell's level set, for the quadratures' points. */
@@ -269,8 +296,10 @@ namespace vefs
           }
       }
 
-      const TransportedFields<dim> &fields;
-      const double                  shift;
+      const TransportedFields<dim>                      &fields;
+      const double                                       shift;
+      const typename TransportedFields<dim>::VectorType *weight;
+      std::array<double, CellLevelSet<dim>::n_vertices>  weights;
       // The generator keeps a reference to its 1D rule.
       const hp::QCollection<1>                          gauss_rule;
       NonMatching::QuadratureGenerator<dim>             generator;
@@ -289,7 +318,7 @@ namespace vefs
     , locations(fraction.size(), Location::empty)
     , cut_index(fraction.size(), numbers::invalid_unsigned_int)
   {
-    CellCutter<dim> cutter(fields, 0);
+    CellCutter<dim> cutter(fields, 0, nullptr);
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
         {
@@ -318,10 +347,13 @@ namespace vefs
 
   template <int dim>
   SharpVolume
-  sharp_liquid_volume(const TransportedFields<dim> &fields, const double shift)
+  sharp_liquid_volume(
+    const TransportedFields<dim>                      &fields,
+    const double                                       shift,
+    const typename TransportedFields<dim>::VectorType *shift_weight)
   {
     using Location = typename LiquidDomain<dim>::Location;
-    CellCutter<dim> cutter(fields, shift);
+    CellCutter<dim> cutter(fields, shift, shift_weight);
     SharpVolume     result;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -331,15 +363,20 @@ namespace vefs
             result.volume += cell->measure();
           else if (location == Location::cut)
             {
-              // On the reference cell dV/dshift = -int 1/|grad psi| over
-              // the surface; the box maps volumes by its measure.
+              // On the reference cell dV/dshift = -int w/|grad psi| over
+              // the surface; the box maps volumes by its measure. The
+              // midpoint fallback's boxes (a saddle of psi, rare) take the
+              // cell's mean weight: an estimate, which only slows Newton.
               double      derivative = 0;
               const auto  level_set  = cutter.level_set();
+              const auto  weight     = cutter.shift_weight();
               const auto &surface    = cutter.surface();
               for (unsigned int q = 0; q < surface.size(); ++q)
-                derivative -= surface.weight(q) /
+                derivative -= surface.weight(q) *
+                              weight.value(surface.point(q)) /
                               level_set.gradient(surface.point(q)).norm();
-              derivative += cutter.fallback_derivative();
+              derivative +=
+                cutter.fallback_derivative() * cutter.mean_shift_weight();
               result.volume += cutter.inside_fraction() * cell->measure();
               result.derivative += derivative * cell->measure();
             }
@@ -354,7 +391,11 @@ namespace vefs
   template class LiquidDomain<2>;
   template class LiquidDomain<3>;
   template SharpVolume
-  sharp_liquid_volume(const TransportedFields<2> &, const double);
+  sharp_liquid_volume(const TransportedFields<2> &,
+                      const double,
+                      const TransportedFields<2>::VectorType *);
   template SharpVolume
-  sharp_liquid_volume(const TransportedFields<3> &, const double);
+  sharp_liquid_volume(const TransportedFields<3> &,
+                      const double,
+                      const TransportedFields<3>::VectorType *);
 } // namespace vefs

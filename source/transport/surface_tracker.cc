@@ -104,7 +104,9 @@ namespace vefs
                    levels.finest_cell_size);
     if (parameters.volume_correction)
       {
-        const double shift = correct_volume(fields, volume_expected);
+        const double shift = correct_volume(fields,
+                                            volume_expected,
+                                            parameters.volume_correction_shift);
         if (!remap)
           level_set_history.shift_base(fields, shift);
       }
@@ -165,7 +167,9 @@ namespace vefs
             if (parameters.volume_correction &&
                 (surface.coarse > 0 || parameters.level_set_interpolation !=
                                          LevelSetInterpolation::linear))
-              correct_volume(fields, volume_expected);
+              correct_volume(fields,
+                             volume_expected,
+                             parameters.volume_correction_shift);
           }
         level_set_history.remap(fields, level_set_gradient);
       }

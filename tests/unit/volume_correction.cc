@@ -15,6 +15,12 @@
 //   in the shift near the root and flat away from it, like a cube root,
 //   where Newton's method alone alternates across the root with growing
 //   steps. The shift is 1/1000 and the volume the target to round-off.
+// - ShiftWeight::surface_speed on the plane with u = (x_0, 0(, 0)): the
+//   weights are w = max(x_0, 0.05) at the nodes (the fastest cut-cell
+//   vertex moves at 1), the corrected Q1 surface x_last = 0.4 - c w_h(x_0)
+//   is linear in each cell, so its volume 0.4 - c int w_h is exact and c =
+//   -0.05 / int w_h (trapezoidal sum of the nodal weights); the nodes at
+//   x_0 = 0 move by 0.05 c. With u = 0 the shift is uniform (-0.05).
 
 #include "unit_test.h"
 
@@ -66,6 +72,67 @@ namespace
                            label + "shift error",
                            std::abs(shift - exact_shift),
                            shift_bound);
+  }
+
+  template <int dim>
+  void
+  check_surface_speed(std::ostream &out, const double speed)
+  {
+    const MPI_Comm                            comm = MPI_COMM_WORLD;
+    parallel::distributed::Triangulation<dim> triangulation(comm);
+    GridGenerator::hyper_cube(triangulation, 0, 1);
+    const unsigned int n_cells = dim == 2 ? 32 : 16;
+    triangulation.refine_global(dim == 2 ? 5 : 4);
+
+    vefs::TransportedFields<dim> fields(triangulation, false, false, {});
+    fields.setup_dofs();
+    for (const auto &node : fields.nodes())
+      {
+        fields.set_level_set(node, node.point[dim - 1] - 0.4);
+        Tensor<1, dim> u;
+        u[0] = speed * node.point[0];
+        fields.set_velocity(node, u);
+      }
+    fields.finalize();
+
+    const auto weight = [&](const double x) {
+      return speed > 0 ? std::max(x, vefs::min_speed_weight) : 1.;
+    };
+    double integral = 0;
+    for (unsigned int i = 0; i < n_cells; ++i)
+      integral +=
+        0.5 * (weight(double(i) / n_cells) + weight(double(i + 1) / n_cells)) /
+        n_cells;
+    const double exact_shift = -0.05 / integral;
+
+    const double shift =
+      vefs::correct_volume(fields, 0.45, vefs::ShiftWeight::surface_speed);
+    const double volume = vefs::sharp_liquid_volume(fields, 0.).volume;
+    double       largest_rest_error = 0;
+    for (const auto &node : fields.nodes())
+      if (node.point[0] == 0)
+        largest_rest_error = std::max(largest_rest_error,
+                                      std::abs(fields.level_set(node) -
+                                               (node.point[dim - 1] - 0.4 +
+                                                exact_shift * weight(0))));
+    largest_rest_error = Utilities::MPI::max(largest_rest_error, comm);
+
+    const std::string label =
+      std::to_string(dim) +
+      "D, plane, surface speed weights, u = " + (speed > 0 ? "(x_0, 0)" : "0") +
+      ", ";
+    unit_test::check_below(out,
+                           label + "volume error over the target",
+                           std::abs(volume - 0.45) / 0.45,
+                           1e-12);
+    unit_test::check_below(out,
+                           label + "shift error",
+                           std::abs(shift - exact_shift),
+                           1e-12);
+    unit_test::check_below(out,
+                           label + "level set error at x_0 = 0",
+                           largest_rest_error,
+                           1e-12);
   }
 } // namespace
 
@@ -120,5 +187,10 @@ main(int argc, char **argv)
       0.5,
       a,
       1e-12);
+    for (const double speed : {1., 0.})
+      {
+        check_surface_speed<2>(out, speed);
+        check_surface_speed<3>(out, speed);
+      }
   });
 }

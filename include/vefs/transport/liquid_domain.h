@@ -99,7 +99,8 @@ namespace vefs
     std::vector<CutCell>      cut_cells;
   };
 
-  /** Volume of the liquid psi + shift < 0 and its derivative in the shift. */
+  /** Volume of the liquid psi + shift w < 0 and its derivative in the
+   * shift. */
   struct SharpVolume
   {
     double volume     = 0;
@@ -108,12 +109,16 @@ namespace vefs
 
   /**
    * The liquid volume of a LiquidDomain built from the level set psi + shift
-   * (owned cells, summed over the ranks): the volume the flow step
-   * integrates over.
+   * w (owned cells, summed over the ranks): the volume the flow step
+   * integrates over. w is the level set entry of @p shift_weight (a vector
+   * of the fields' layout, ghosts updated), 1 without it.
    */
   template <int dim>
   SharpVolume
-  sharp_liquid_volume(const TransportedFields<dim> &fields, const double shift);
+  sharp_liquid_volume(
+    const TransportedFields<dim>                      &fields,
+    const double                                       shift,
+    const typename TransportedFields<dim>::VectorType *shift_weight = nullptr);
 
   /**
    * Q1 shape functions on the liquid part of a cell: a Gauss rule on a full

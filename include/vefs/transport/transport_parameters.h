@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <vefs/transport/volume_correction.h>
+
 #include <string>
 
 namespace vefs
@@ -56,6 +58,8 @@ namespace vefs
     bool         automatic_remap_distance = true;
     unsigned int redistancing_interval    = 1;
     bool         volume_correction        = true;
+    /** How the correction's shift is spread ('Volume correction shift'). */
+    ShiftWeight volume_correction_shift = ShiftWeight::uniform;
 
     std::string prescribed_velocity   = "";
     std::string exact_final_level_set = "";
