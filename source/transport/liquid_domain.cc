@@ -88,7 +88,8 @@ namespace vefs
     };
 
     /**
-     * Cuts the cells of the mesh by the Q1 level set psi + shift: where a
+     * Cuts the cells of the mesh by the Q1 level set psi + shift w (w the
+     * nodal weights sharp_liquid_volume() takes, 1 without them): where a
      * cell lies, and for a cut cell the quadratures of its liquid part and
      * surface on the reference cell.
      */
@@ -218,6 +219,7 @@ namespace vefs
         return CellLevelSet<dim>(weights);
       }
 
+      /** The mean of the cell's vertex weights. */
       double
       mean_shift_weight() const
       {
