@@ -373,10 +373,12 @@ namespace vefs
               const auto  level_set  = cutter.level_set();
               const auto  weight     = cutter.shift_weight();
               const auto &surface    = cutter.surface();
+              // Without weights (the default) w = 1: no interpolation.
               for (unsigned int q = 0; q < surface.size(); ++q)
-                derivative -= surface.weight(q) *
-                              weight.value(surface.point(q)) /
-                              level_set.gradient(surface.point(q)).norm();
+                derivative -=
+                  surface.weight(q) *
+                  (shift_weight ? weight.value(surface.point(q)) : 1.) /
+                  level_set.gradient(surface.point(q)).norm();
               derivative +=
                 cutter.fallback_derivative() * cutter.mean_shift_weight();
               result.volume += cutter.inside_fraction() * cell->measure();

@@ -498,24 +498,13 @@ namespace vefs
     const typename TransportedFields<dim>::VectorType &level_set,
     const unsigned int                                 max_level)
   {
-    constexpr unsigned int c = TransportedFields<dim>::level_set_component;
-    SurfaceCells           count;
+    SurfaceCells count;
     for (const auto &cell : fields.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() && fields.surface_crosses(level_set, cell))
         {
-          bool inside = false, outside = false;
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              const double psi = fields.entry_at(level_set, cell, v, c);
-              inside |= psi < 0;
-              outside |= psi > 0;
-            }
-          if (inside && outside)
-            {
-              ++count.total;
-              if (static_cast<unsigned int>(cell->level()) < max_level)
-                ++count.coarse;
-            }
+          ++count.total;
+          if (static_cast<unsigned int>(cell->level()) < max_level)
+            ++count.coarse;
         }
     // Both counts in one reduction: it runs at every refinement cycle.
     std::array<unsigned int, 2> counts = {{count.coarse, count.total}};

@@ -20,15 +20,10 @@ namespace vefs
     {
       double fastest = 0;
       for (const auto &cell : fields.dof_handler.active_cell_iterators())
-        if (!cell->is_artificial())
-          {
-            bool liquid = false, empty = false;
-            for (const unsigned int v : cell->vertex_indices())
-              (fields.level_set_at(cell, v) < 0 ? liquid : empty) = true;
-            if (liquid && empty)
-              for (const unsigned int v : cell->vertex_indices())
-                fastest = std::max(fastest, fields.velocity_at(cell, v).norm());
-          }
+        if (!cell->is_artificial() &&
+            fields.surface_crosses(fields.vector(), cell))
+          for (const unsigned int v : cell->vertex_indices())
+            fastest = std::max(fastest, fields.velocity_at(cell, v).norm());
       fastest = Utilities::MPI::max(
         fastest,
         fields.dof_handler.get_triangulation().get_communicator());

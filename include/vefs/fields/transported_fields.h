@@ -317,6 +317,25 @@ namespace vefs
     }
 
     /**
+     * Whether the surface crosses an owned or ghost @p cell in the level set
+     * slot of @p vector (the fields' layout): psi < 0 at one vertex and
+     * psi > 0 at another.
+     */
+    template <typename CellIterator>
+    bool
+    surface_crosses(const VectorType &vector, const CellIterator &cell) const
+    {
+      bool inside = false, outside = false;
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const double psi = entry_at(vector, cell, v, level_set_component);
+          inside |= psi < 0;
+          outside |= psi > 0;
+        }
+      return inside && outside;
+    }
+
+    /**
      * Local indices (owned or ghost, in the numbering of partitioner) of the
      * first component at each vertex of a cell: component c of vertex v is
      * entry first[v] + c, the components of a vertex being numbered in a row.
