@@ -19,7 +19,6 @@ of the pool's surface line y = 0.05 m; at t = 0.1 s the drop's area from
 the mean velocity (the tutorial's measure, doc/tutorial.md, section 4).
 """
 import argparse
-import glob
 import os
 import sys
 import threading
@@ -31,7 +30,7 @@ from vefs_tools.prm import apply_settings, set_entry
 from vefs_tools.run import add_study_arguments, run_vefs, vefs_command, \
     write_report
 from vefs_tools.statistics import read_statistics
-from vefs_tools.vtu import read_pvtu
+from vefs_tools.vtu import read_pvtu, read_series
 
 SHIFTS = ["uniform", "surface speed"]
 RHO_G_DEPTH = 1000 * 9.81 * 0.05
@@ -109,13 +108,11 @@ def main():
     series = {}
     for shift in SHIFTS:
         out = os.path.join(results, run_name(shift))
-        frames = sorted(glob.glob(os.path.join(out, "solution_*.pvtu")))
-        if not frames:
+        if not os.path.isdir(out):
+            sys.exit("no run in %s: run without --no-run" % out)
+        rows = [(t,) + frame_measures(path) for t, path in read_series(out)]
+        if not rows:
             sys.exit("no frames in %s: run without --no-run" % out)
-        rows = []
-        for path in frames:
-            step = int(os.path.basename(path)[9:14])
-            rows.append((0.01 * step,) + frame_measures(path))
         series[shift] = rows
         for t, p_lo, p_hi, speed, psi_lo, psi_hi in rows[4::4]:
             lines.append("| %s | %.2f | %.1f-%.1f | %.1e | %.1e to %.1e |"

@@ -14,8 +14,9 @@ namespace vefs
      * Each node of the level set moves in proportion to its speed |u| over
      * the largest speed at the vertices of cut cells, at least
      * min_speed_weight: the characteristics of a node at rest end at the
-     * node itself, and its interpolation there makes no volume error (a pool
-     * at rest beside a falling drop keeps its level). Uniform where no
+     * node itself, and its interpolation there makes no volume error (a
+     * falling drop keeps its own area; but a pool at rest whose surface lies
+     * on mesh nodes then moves, doc/volume_correction.md). Uniform where no
      * vertex of a cut cell moves.
      */
     surface_speed
